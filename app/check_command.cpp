@@ -1,0 +1,218 @@
+#include "app/check_command.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_code.h"
+#include "app/option_values.h"
+#include "app/progress.h"
+#include "app/showcase.h"
+#include "materials/bsdf/registry.h"
+#include "validation/negative_controls.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+
+// VALIDATION.md's negative control: sample from a roughness 10% off the one pdf() uses.
+constexpr double RoughnessMismatchFactor = 1.1;
+
+constexpr uint64_t MinSamples = 1000;
+constexpr uint64_t MaxSamples = 100'000'000'000;
+
+struct MaterialUnderTest {
+  std::string label;  // names the material's rows and its image files
+  json completed;
+  std::unique_ptr<BsdfModel> model;
+  // With --negative-controls, for models that have a roughness.
+  std::unique_ptr<BsdfModel> roughnessMismatchSampler;
+};
+
+// The sampler for the roughness-mismatch control. Scaling up is clamped at the largest
+// allowed roughness, where it would change nothing, and the control must be a real mismatch:
+// there, scale down instead.
+std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const json& material) {
+  const auto rougher = withScaledRoughness(material, RoughnessMismatchFactor);
+  if (!rougher) return nullptr;
+  if (*rougher != completeMaterial(material)) return makeBsdf(*rougher);
+  return makeBsdf(*withScaledRoughness(material, 1.0 / RoughnessMismatchFactor));
+}
+
+MaterialUnderTest prepareMaterial(std::string label, const json& material, bool negativeControls) {
+  MaterialUnderTest prepared{std::move(label), completeMaterial(material), makeBsdf(material), nullptr};
+  if (negativeControls) prepared.roughnessMismatchSampler = makeRoughnessMismatchSampler(material);
+  return prepared;
+}
+
+// A file's material errors name the file: with several materials the user must know which.
+MaterialUnderTest prepareArgument(const std::string& argument, bool negativeControls) {
+  const json material = loadMaterialArgument(argument);
+  if (isInlineMaterial(argument)) return prepareMaterial(material.dump(), material, negativeControls);
+  try {
+    return prepareMaterial(argument, material, negativeControls);
+  } catch (const MaterialError& error) {
+    throw MaterialError("material file \"" + argument + "\": " + error.what());
+  }
+}
+
+// Rows and image files are told apart by label, so the same material given twice gets a
+// numbered second label.
+void makeLabelsUnique(std::vector<MaterialUnderTest>& materials) {
+  std::set<std::string> used;
+  for (MaterialUnderTest& material : materials) {
+    const std::string base = material.label;
+    for (int copy = 2; !used.insert(material.label).second; ++copy) material.label = base + " #" + std::to_string(copy);
+  }
+}
+
+std::vector<MaterialUnderTest> prepareMaterials(const CheckCommandOptions& options) {
+  std::vector<MaterialUnderTest> materials;
+  if (options.materials.empty()) {
+    for (const ShowcaseMaterial& showcase : showcaseMaterials())
+      materials.push_back(prepareMaterial(showcase.name, showcase.material, options.negativeControls));
+  } else {
+    for (const std::string& argument : options.materials)
+      materials.push_back(prepareArgument(argument, options.negativeControls));
+  }
+  makeLabelsUnique(materials);
+  return materials;
+}
+
+void createImageDirectory(const std::filesystem::path& directory) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error)
+    throw InputError("--images: cannot create directory \"" + directory.string() + "\" (" + error.message() +
+                     "); allowed: a directory, or a path where one can be created");
+}
+
+CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOptions& kit, bool negativeControls,
+                          const ProgressCallback& progress) {
+  CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
+  if (negativeControls)
+    report.append(
+        runNegativeControls(*material.model, material.roughnessMismatchSampler.get(), material.label, kit, progress));
+  return report;
+}
+
+json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit) {
+  return {{"wi_theta_deg", kit.wiThetaDeg},
+          {"wi_phi_deg", kit.wiPhiDeg},
+          {"samples", kit.samples},
+          {"grid", {kit.thetaBins, kit.phiBins}},
+          {"seed", kit.seed},
+          {"alpha", kit.alpha},
+          {"chi_square_test_count", kit.chiSquareTestCount},
+          {"negative_controls", options.negativeControls},
+          {"images", kit.imageDir ? json(kit.imageDir->string()) : json()}};
+}
+
+void printJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit,
+               const std::vector<MaterialUnderTest>& materials, const CheckReport& report) {
+  json materialsJson = json::array();
+  for (const MaterialUnderTest& material : materials)
+    materialsJson.push_back({{"label", material.label}, {"material", material.completed}});
+  const json document{{"options", optionsJson(options, kit)},
+                      {"materials", std::move(materialsJson)},
+                      {"report", toJson(report)},
+                      {"passed", report.passed()}};
+  std::cout << document.dump(2) << "\n";
+}
+
+void printText(const std::vector<MaterialUnderTest>& materials, const CheckReport& report) {
+  std::cout << "materials (every default filled in):\n";
+  for (const MaterialUnderTest& material : materials)
+    std::cout << "  " << material.label << " = " << material.completed.dump() << "\n";
+  std::cout << formatTable(report);
+  std::cout << "verdict: " << (report.passed() ? "PASS" : "FAIL") << "\n";
+}
+
+}  // namespace
+
+CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "check", "Test materials' sampling, pdf, energy and reciprocity statistically; exit 0 only if all pass");
+  BsdfCheckOptions& kit = options.kit;
+  command->add_option("material", options.materials,
+                      "Materials: inline JSON ('{\"type\": \"conductor\"}') or JSON files; none: a built-in showcase");
+  // One value per --wi-theta, split at commas, so that the materials after it stay positional.
+  command->add_option("--wi-theta", kit.wiThetaDeg, "Incident polar angles in degrees, comma-separated")
+      ->type_name("DEGREES")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(numberIn(ValueRange{0.0, 90.0, false, true}, "degrees"))
+      ->capture_default_str();
+  command->add_option("--wi-phi", kit.wiPhiDeg, "Incident azimuth in degrees")
+      ->type_name("DEGREES")
+      ->check(numberIn(ValueRange::closed(-360.0, 360.0), "degrees"))
+      ->capture_default_str();
+  command->add_option("--samples", kit.samples, "Samples per chi-square test")
+      ->type_name("INTEGER")
+      ->transform(integerIn(MinSamples, MaxSamples))
+      ->capture_default_str();
+  command
+      ->add_option_function<std::string>(
+          "--grid",
+          [&kit](const std::string& text) {
+            const GridSize grid = *parseGrid(text);
+            kit.thetaBins = grid.cosThetaCells;
+            kit.phiBins = grid.phiCells;
+          },
+          "Chi-square grid: cos(theta) cells x phi cells")
+      ->type_name("COSxPHI")
+      ->check(gridValidator())
+      ->default_str(std::to_string(kit.thetaBins) + "x" + std::to_string(kit.phiBins));
+  command->add_option("--seed", kit.seed, "Seed of the random numbers; the same seed gives the same numbers")
+      ->type_name("INTEGER")
+      ->transform(integerIn(0))
+      ->capture_default_str();
+  command->add_option("--alpha", kit.alpha, "Family-wise significance, Sidak-corrected over every chi-square test")
+      ->type_name("NUMBER")
+      ->check(numberIn(ValueRange{0.0, 0.5, true, false}))
+      ->capture_default_str();
+  command
+      ->add_option_function<std::string>(
+          "--images", [&kit](const std::string& directory) { kit.imageDir = directory; },
+          "Write observed, expected and residual PNG maps into this directory")
+      ->type_name("DIR")
+      ->check(outputDirectoryValidator());
+  command->add_flag("--negative-controls", options.negativeControls,
+                    "Also run deliberately wrong samplers, which the kit must reject");
+  command->add_flag("--json", options.json, "Print one JSON document: completed materials, every row, the verdict");
+  return command;
+}
+
+int runCheckCommand(const CheckCommandOptions& options) {
+  if (options.kit.wiThetaDeg.empty())
+    throw InputError("--wi-theta: no angle given; allowed: degrees in [0, 90), comma-separated, e.g. 0,30,60,85,89");
+  const std::vector<MaterialUnderTest> materials = prepareMaterials(options);
+
+  BsdfCheckOptions kit = options.kit;
+  kit.chiSquareTestCount = chiSquareTestCount(kit) * static_cast<int>(materials.size());
+  if (kit.imageDir) createImageDirectory(*kit.imageDir);
+
+  CheckReport report;
+  {
+    ProgressLine progress;
+    for (size_t i = 0; i < materials.size(); ++i) {
+      const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "]";
+      report.append(checkMaterial(materials[i], kit, options.negativeControls, progress.callback(step)));
+    }
+  }
+  if (options.json)
+    printJson(options, kit, materials, report);
+  else
+    printText(materials, report);
+  return static_cast<int>(report.passed() ? ExitCode::Success : ExitCode::CheckFailed);
+}
+
+}  // namespace scatterlab

@@ -1,0 +1,98 @@
+#include "app/option_values.h"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+namespace scatterlab {
+
+namespace {
+
+std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
+
+// The whole of `text` as a number of type T, or nothing (no partial parses: "12abc" is not 12).
+template <typename T> std::optional<T> parseWhole(const std::string& text) {
+  T value{};
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end) return std::nullopt;
+  return value;
+}
+
+// Integers written in floating-point notation ("1e6") are exact up to 2^53.
+std::optional<uint64_t> parseInteger(const std::string& text) {
+  if (const auto exact = parseWhole<uint64_t>(text)) return exact;
+  const auto real = parseWhole<double>(text);
+  constexpr double MaxExact = 9007199254740992.0;  // 2^53
+  if (!real || !(*real >= 0 && *real <= MaxExact) || std::floor(*real) != *real) return std::nullopt;
+  return static_cast<uint64_t>(*real);
+}
+
+}  // namespace
+
+CLI::Validator numberIn(const ValueRange& range, const std::string& what) {
+  const std::string allowed = what + " " + range.describe();
+  return CLI::Validator(
+      [range, allowed](std::string& text) -> std::string {
+        const auto value = parseWhole<double>(text);
+        if (!value || !std::isfinite(*value)) return inQuotes(text) + " is not a finite number; allowed: " + allowed;
+        if (!range.contains(*value)) return inQuotes(text) + " is out of range; allowed: " + allowed;
+        return "";
+      },
+      range.describe());
+}
+
+CLI::Validator integerIn(uint64_t lo, uint64_t hi) {
+  const std::string range = hi == std::numeric_limits<uint64_t>::max()
+                                ? ">= " + std::to_string(lo)
+                                : "in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const std::string allowed = "an integer " + range;
+  return CLI::Validator(
+      [lo, hi, allowed](std::string& text) -> std::string {
+        const auto value = parseInteger(text);
+        if (!value) return inQuotes(text) + " is not an integer; allowed: " + allowed;
+        if (*value < lo || *value > hi) return inQuotes(text) + " is out of range; allowed: " + allowed;
+        text = std::to_string(*value);
+        return "";
+      },
+      range);
+}
+
+std::optional<GridSize> parseGrid(const std::string& text) {
+  const auto separator = text.find('x');
+  if (separator == std::string::npos) return std::nullopt;
+  const auto cosTheta = parseWhole<int>(text.substr(0, separator));
+  const auto phi = parseWhole<int>(text.substr(separator + 1));
+  const auto inRange = [](const std::optional<int>& cells) {
+    return cells && *cells >= MinGridCells && *cells <= MaxGridCells;
+  };
+  if (!inRange(cosTheta) || !inRange(phi)) return std::nullopt;
+  return GridSize{*cosTheta, *phi};
+}
+
+CLI::Validator gridValidator() {
+  const std::string allowed = "COSxPHI, cos(theta) cells x phi cells, each an integer in [" +
+                              std::to_string(MinGridCells) + ", " + std::to_string(MaxGridCells) + "], e.g. 64x128";
+  return CLI::Validator(
+      [allowed](std::string& text) -> std::string {
+        return parseGrid(text) ? "" : inQuotes(text) + " is not a valid grid; allowed: " + allowed;
+      },
+      "each in [" + std::to_string(MinGridCells) + ", " + std::to_string(MaxGridCells) + "]");
+}
+
+CLI::Validator outputDirectoryValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::string allowed = "; allowed: a directory, or a path where one can be created";
+        if (text.empty()) return "an empty path" + allowed;
+        std::error_code error;
+        const auto status = std::filesystem::status(text, error);
+        if (std::filesystem::exists(status) && !std::filesystem::is_directory(status))
+          return inQuotes(text) + " exists and is not a directory" + allowed;
+        return "";
+      },
+      "");
+}
+
+}  // namespace scatterlab

@@ -1,0 +1,39 @@
+// Validators for the values of command-line options. Each rejects a bad value with one
+// message naming the value and what is allowed; CLI11 prefixes the option's name, so the
+// user reads e.g. `--grid: "64" is not a grid; allowed: ...`.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "materials/bsdf/registry.h"
+
+namespace scatterlab {
+
+// A finite real number inside `range`; `what` names it in messages ("degrees", "a number").
+CLI::Validator numberIn(const ValueRange& range, const std::string& what = "a number");
+
+// An integer in [lo, hi]; "1e6" is accepted and rewritten as "1000000". Use with
+// CLI::Option::transform so that the rewritten text is what CLI11 converts.
+CLI::Validator integerIn(uint64_t lo, uint64_t hi = std::numeric_limits<uint64_t>::max());
+
+// The chi-square grid "COSxPHI": cos(theta) cells x phi cells.
+struct GridSize {
+  int cosThetaCells = 0;
+  int phiCells = 0;
+};
+inline constexpr int MinGridCells = 2;
+inline constexpr int MaxGridCells = 4096;
+// The grid `text` describes, or nothing unless each side is in [MinGridCells, MaxGridCells].
+std::optional<GridSize> parseGrid(const std::string& text);
+CLI::Validator gridValidator();
+
+// A directory that may not exist yet (it is created once every input is valid), but is not
+// an existing file.
+CLI::Validator outputDirectoryValidator();
+
+}  // namespace scatterlab

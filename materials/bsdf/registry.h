@@ -1,0 +1,139 @@
+// The material registry: builds every BSDF model from its JSON description and describes
+// every model's parameters for `scatterlab models` (DESIGN.md, "Material descriptions").
+//
+// Each model is one entry: a declarative parameter spec and a build function. Parsing and
+// validation are generic over the spec, so an error always names the key, the value given
+// and what is allowed, the same way for every model, and adding a model touches nothing but
+// its entry in registry.cpp.
+#pragma once
+
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "materials/bsdf/bsdf.h"
+
+namespace scatterlab {
+
+// A material description that cannot be built. The message names the key, the value given
+// and what is allowed, so that it can be shown to the user as it is.
+class MaterialError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// number: a real; rgb: a number (all channels) or [r, g, b]; pair: a number (both) or
+// [x, y]; choice: one string out of a list.
+enum class ParameterKind { Number, Rgb, Pair, Choice };
+std::string toString(ParameterKind kind);
+
+// The values a number (or every component of an rgb or pair) may take. Either end may be
+// open or infinite.
+struct ValueRange {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool minOpen = false;
+  bool maxOpen = false;
+
+  static ValueRange closed(double lo, double hi) { return {lo, hi, false, false}; }
+  static ValueRange above(double lo) { return {lo, std::numeric_limits<double>::infinity(), true, true}; }
+  static ValueRange atLeast(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, true}; }
+
+  bool contains(double x) const;
+  // The nearest value inside the range (open ends: the nearest representable value inside).
+  double clamp(double x) const;
+  // "in [0.001, 1]", "> 0", ">= 0".
+  std::string describe() const;
+};
+
+struct ParameterSpec {
+  std::string name{};
+  ParameterKind kind = ParameterKind::Number;
+  ValueRange range{};                  // Number, Rgb, Pair
+  std::vector<std::string> choices{};  // Choice
+  // null when the parameter has no default: it is then one of the alternatives of another
+  // parameter (a conductor's "eta" and "k" instead of "metal") and absent unless given.
+  nlohmann::json defaultValue{};
+  std::string description{};
+
+  // What the parameter accepts, in words: "a number or [alpha_x, alpha_y], each in [0.001, 1]".
+  std::string allowed() const;
+};
+
+// A parameter's value after validation, in the form its kind describes.
+using ParameterValue = std::variant<double, Rgb, Vec2d, std::string>;
+
+// The validated parameters of one material, every default filled in. Build functions read
+// them by name; the spec guarantees that a parameter with a default is always present.
+class MaterialParameters {
+ public:
+  void set(const std::string& name, ParameterValue value) { values_.insert_or_assign(name, std::move(value)); }
+  bool has(std::string_view name) const { return values_.find(name) != values_.end(); }
+  // Asking for a parameter the spec does not provide, or as another kind, is a bug in the
+  // build function: std::logic_error.
+  double number(std::string_view name) const;
+  Rgb rgb(std::string_view name) const;
+  Vec2d pair(std::string_view name) const;
+  const std::string& choice(std::string_view name) const;
+
+ private:
+  template <typename T> const T& get(std::string_view name) const;
+
+  std::map<std::string, ParameterValue, std::less<>> values_;
+};
+
+using BuildBsdfFunction = std::unique_ptr<BsdfModel> (*)(const MaterialParameters&);
+
+// One registry entry.
+struct MaterialModel {
+  std::string type{};
+  std::string description{};  // one line
+  std::string citation{};
+  std::vector<ParameterSpec> parameters{};
+  // Sets of keys that say the same thing in different ways (a conductor's "metal", or "eta"
+  // with "k"). A material gives at most one set, and all of it; with none given, the first
+  // set's defaults apply.
+  std::vector<std::vector<std::string>> alternatives{};
+  BuildBsdfFunction build = nullptr;
+
+  const ParameterSpec* findParameter(std::string_view name) const;
+};
+
+// Every model, in the order `scatterlab models` lists them.
+std::span<const MaterialModel> materialModels();
+const MaterialModel* findMaterialModel(std::string_view type);
+
+// The catalog as JSON: [{type, description, citation, parameters: [{name, kind, allowed,
+// min, max, min_open, max_open, choices, default, description}], alternatives}].
+nlohmann::json materialCatalogJson();
+
+// Builds the model a material describes; throws MaterialError on any invalid description.
+std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material);
+
+// The same material with every default filled in (validated; throws MaterialError), so that
+// what is printed is exactly what was built.
+nlohmann::json completeMaterial(const nlohmann::json& material);
+
+// The material with its roughness ("alpha") multiplied by `factor` (> 0) and clamped to the
+// allowed range, every default filled in; nullopt for models without a roughness. The
+// roughness-mismatch negative control samples from it.
+std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor);
+
+// True when a material argument is inline JSON rather than a file path.
+bool isInlineMaterial(std::string_view argument);
+
+// Parses a material argument: inline JSON when it starts with '{', a file path otherwise.
+// Throws MaterialError naming the file (not found, not readable) or the source and position
+// of a parse error. The result is not validated; makeBsdf/completeMaterial do that.
+nlohmann::json loadMaterialArgument(const std::string& argument);
+
+}  // namespace scatterlab

@@ -1,0 +1,264 @@
+#include "validation/bsdf_check.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "materials/core/atomic_file.h"
+#include "validation/bsdf_sampling.h"
+#include "validation/consistency.h"
+#include "validation/energy.h"
+#include "validation/heatmap.h"
+#include "validation/negative_controls.h"
+#include "validation/reciprocity.h"
+
+namespace scatterlab {
+namespace {
+
+// Albedo from quadrature must not exceed 1 by more than the quadrature's own error.
+constexpr double AlbedoTolerance = 1e-4;
+// White furnace: lossless models reflect everything within 0.5% (VALIDATION.md section 3).
+constexpr double FurnaceTolerance = 0.005;
+// Quadrature vs importance-sampled albedo: |difference| <= 5 standard errors (+ a floor for
+// the quadrature's error, which matters when the weight has zero variance, e.g. Lambertian).
+constexpr double AlbedoAgreementSigmas = 5.0;
+constexpr double AlbedoQuadratureFloor = 2e-5;
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c);
+  return buf;
+}
+
+std::string fileStem(const std::string& label, double wiTheta) {
+  std::string s;
+  for (char c : label) s += (std::isalnum((unsigned char)c) || c == '-' || c == '_' || c == '.') ? c : '_';
+  if (s.size() > 80) s.resize(80);
+  return s + "_wi" + format("%g", wiTheta);
+}
+
+CheckRow makeRow(const std::string& label, const std::string& test, double wiTheta, double statistic, double threshold,
+                 bool passed, std::string note) {
+  CheckRow row;
+  row.material = label;
+  row.test = test;
+  row.wiThetaDeg = wiTheta;
+  row.statistic = statistic;
+  row.threshold = threshold;
+  row.passed = passed;
+  row.note = std::move(note);
+  return row;
+}
+
+// The chi-square verdict with the histogram's hard failures folded in.
+ChiSquareResult chiSquareVerdict(const SampleHistogram& histogram, const std::vector<double>& pdfIntegrals,
+                                 const SphericalGrid& grid, size_t n, double threshold) {
+  ChiSquareResult r = chiSquareFromTables(histogram.counts, expectedCounts(grid, pdfIntegrals, histogram.deltas, n), n,
+                                          threshold);
+  if (histogram.invalidSamples > 0) {
+    r.passed = false;
+    r.failure = std::to_string(histogram.invalidSamples) + " invalid samples, first: " + histogram.firstInvalid;
+  } else if (!histogram.deltaMismatch.empty()) {
+    r.passed = false;
+    r.failure = histogram.deltaMismatch;
+  }
+  return r;
+}
+
+CheckRow chiSquareRow(const std::string& label, const std::string& test, double wiTheta, const ChiSquareResult& r) {
+  CheckRow row = makeRow(label, test, wiTheta, r.statistic, r.threshold, r.passed,
+                         r.failure.empty() ? std::to_string(r.pooledCells) + " cells pooled" : r.failure);
+  row.dof = r.dof;
+  row.pValue = r.pValue;
+  return row;
+}
+
+void writeImages(const std::filesystem::path& dir, const std::string& stem, const ChiSquareResult& chi,
+                 const ConsistencyResult* consistency) {
+  std::filesystem::create_directories(dir);
+  double peak = 0;
+  for (size_t i = 0; i < chi.observed.values.size(); ++i)
+    peak = std::max({peak, chi.observed.values[i], chi.expected.values[i]});
+  writeHeatmapPng(dir / (stem + "_observed.png"), chi.observed, HeatmapScale::Sequential, peak);
+  writeHeatmapPng(dir / (stem + "_expected.png"), chi.expected, HeatmapScale::Sequential, peak);
+  Table2D residual(chi.observed.rows, chi.observed.cols);
+  for (size_t i = 0; i < residual.values.size(); ++i) {
+    const double e = chi.expected.values[i], o = chi.observed.values[i];
+    residual.values[i] = e > 0 ? (o - e) / std::sqrt(e) : (o > 0 ? INFINITY : 0.0);
+  }
+  writeHeatmapPng(dir / (stem + "_residual.png"), residual, HeatmapScale::Diverging, 5.0);
+  nlohmann::json tables = {{"rows", chi.observed.rows}, {"cols", chi.observed.cols},
+                           {"layout", "row-major; rows: cos(theta) from -1 to 1; cols: phi from -pi to pi"},
+                           {"observed", chi.observed.values}, {"expected", chi.expected.values}};
+  if (consistency) {
+    // Scale: the tolerance sits a tenth of the way up, so any failing cell is bright.
+    writeHeatmapPng(dir / (stem + "_consistency.png"), consistency->maxErrorPerCell, HeatmapScale::Sequential,
+                    10.0 * ConsistencyTolerance);
+    tables["consistency_max_error"] = consistency->maxErrorPerCell.values;
+  }
+  writeTextFileAtomically(dir / (stem + "_tables.json"), tables.dump());
+}
+
+double perTestThreshold(const BsdfCheckOptions& options, int runCount) {
+  return sidakSignificance(options.alpha, options.chiSquareTestCount > 0 ? options.chiSquareTestCount : runCount);
+}
+
+QuadratureOptions kitQuadrature(size_t samples) {
+  QuadratureOptions q;
+  // Absolute floor: a thousandth of one expected sample, per cell.
+  q.absoluteTolerance = 1e-3 / double(std::max<size_t>(samples, 1));
+  return q;
+}
+
+CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
+                                 double wiTheta, uint64_t seed, double threshold) {
+  const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
+  const SphericalGrid grid{options.thetaBins, options.phiBins};
+  const size_t n = options.samples;
+  CheckReport report;
+
+  const SampleHistogram histogram = drawSamples(grid, bsdfDirectionSampler(model, wi), n, seed);
+  const std::vector<glm::dvec4> cells =
+      integrateCells(grid, bsdfEnergyIntegrand(model, wi), histogram.probes, kitQuadrature(n));
+  const ChiSquareResult chi = chiSquareVerdict(histogram, pdfPart(cells), grid, n, threshold);
+  report.rows.push_back(chiSquareRow(label, "chi2", wiTheta, chi));
+
+  const ConsistencyResult consistency = checkConsistency(model, wi, grid, n, seed);
+  {
+    std::string note = format("%.0f samples, max weight error %.2e, max pdf error %.2e", double(n),
+                              consistency.maxWeightError, consistency.maxPdfError);
+    if (consistency.supportViolations)
+      note = std::to_string(consistency.supportViolations) + " of " + std::to_string(consistency.supportProbes) +
+             " directions have eval > 0 but pdf = 0; " + note;
+    if (!consistency.firstFailure.empty()) note += "; first failure: " + consistency.firstFailure;
+    report.rows.push_back(makeRow(label, "consistency", wiTheta,
+                                  std::max(consistency.maxWeightError, consistency.maxPdfError), ConsistencyTolerance,
+                                  consistency.passed(), note));
+  }
+
+  const EnergyResult energy = energyFromIntegrals(cells, histogram);
+  report.rows.push_back(makeRow(
+      label, "normalisation", wiTheta, energy.normalisationError, energy.normalisationTolerance,
+      energy.normalisationError <= energy.normalisationTolerance,
+      format("integral of pdf %.6f + delta %.6f vs 1 - P(fail) = %.6f", energy.pdfIntegral, energy.deltaProbability,
+             1.0 - energy.failureProbability)));
+
+  const double maxAlbedo = std::max({energy.albedo.x, energy.albedo.y, energy.albedo.z});
+  report.rows.push_back(makeRow(label, "albedo", wiTheta, maxAlbedo, 1.0 + AlbedoTolerance,
+                                maxAlbedo <= 1.0 + AlbedoTolerance,
+                                format("directional albedo (quadrature) r %.5f g %.5f b %.5f", energy.albedo.x,
+                                       energy.albedo.y, energy.albedo.z) +
+                                    (model.isLossless() ? "" : format(", loses %.2f%% at least", 100 * (1 - maxAlbedo)))));
+
+  double worstZ = 0;
+  for (int c = 0; c < 3; ++c) {
+    const double z = std::abs(energy.albedo[c] - consistency.albedoMean[c]) /
+                     (consistency.albedoStdError[c] + AlbedoQuadratureFloor);
+    worstZ = std::max(worstZ, std::isfinite(z) ? z : INFINITY);
+  }
+  report.rows.push_back(makeRow(label, "albedo-mc", wiTheta, worstZ, AlbedoAgreementSigmas,
+                                worstZ <= AlbedoAgreementSigmas,
+                                format("importance-sampled albedo r %.5f g %.5f b %.5f (|z| vs quadrature)",
+                                       consistency.albedoMean.x, consistency.albedoMean.y, consistency.albedoMean.z)));
+
+  if (model.isLossless()) {
+    const double deviation = std::max({std::abs(energy.albedo.x - 1), std::abs(energy.albedo.y - 1),
+                                       std::abs(energy.albedo.z - 1)});
+    report.rows.push_back(makeRow(label, "furnace", wiTheta, deviation, FurnaceTolerance,
+                                  deviation <= FurnaceTolerance, "lossless model: |albedo - 1| per channel"));
+  }
+
+  if (options.imageDir && (!options.imagesOnFailureOnly || !report.passed()))
+    writeImages(*options.imageDir, fileStem(label, wiTheta), chi, &consistency);
+  return report;
+}
+
+}  // namespace
+
+int chiSquareTestCount(const BsdfCheckOptions& options) { return int(options.wiThetaDeg.size()); }
+
+CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
+                          const ProgressCallback& progress) {
+  CheckReport report;
+  const double threshold = perTestThreshold(options, chiSquareTestCount(options));
+  const size_t steps = options.wiThetaDeg.size() + 1;
+  for (size_t k = 0; k < options.wiThetaDeg.size(); ++k) {
+    if (progress) progress(label + ": wi " + format("%g", options.wiThetaDeg[k]) + " deg", double(k) / steps);
+    report.append(checkAtIncidentAngle(model, label, options, options.wiThetaDeg[k], deriveSeed(options.seed, k),
+                                       threshold));
+  }
+  if (progress) progress(label + ": reciprocity", double(steps - 1) / steps);
+  CheckRow row;
+  row.material = label;
+  row.test = "reciprocity";
+  row.threshold = ReciprocityTolerance;
+  if (model.isReciprocal()) {
+    const ReciprocityResult r =
+        checkReciprocity(model, size_t(options.reciprocityPairs), deriveSeed(options.seed, 1000));
+    row.statistic = r.maxError;
+    row.passed = r.passed();
+    row.note = std::to_string(r.pairs) + " random pairs over the sphere" + (r.worst.empty() ? "" : "; " + r.worst);
+  } else {
+    row.passed = true;
+    row.note = "not reciprocal by design (listed, not tested)";
+  }
+  report.rows.push_back(row);
+  if (progress) progress(label + ": done", 1.0);
+  return report;
+}
+
+CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler, const std::string& label,
+                                const BsdfCheckOptions& options, const ProgressCallback& progress) {
+  CheckReport report;
+  const double threshold = perTestThreshold(options, chiSquareTestCount(options));
+  const SphericalGrid grid{options.thetaBins, options.phiBins};
+  const auto controls = allNegativeControls();
+  for (size_t c = 0; c < controls.size(); ++c) {
+    const std::string test = "control: " + toString(controls[c]);
+    if (controls[c] == NegativeControl::RoughnessMismatch && !alteredSampler) {
+      CheckRow row;
+      row.material = label;
+      row.test = test;
+      row.passed = true;
+      row.note = "not applicable: the model has no roughness parameter";
+      report.rows.push_back(row);
+      continue;
+    }
+    for (size_t k = 0; k < options.wiThetaDeg.size(); ++k) {
+      const double wiTheta = options.wiThetaDeg[k];
+      if (progress)
+        progress(label + ": " + test + " wi " + format("%g", wiTheta),
+                 double(c * options.wiThetaDeg.size() + k) / double(controls.size() * options.wiThetaDeg.size()));
+      const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
+      const std::unique_ptr<BsdfModel> broken = makeNegativeControl(controls[c], model, wi, alteredSampler);
+      if (const std::optional<std::string> noOp = negativeControlIsNoOp(controls[c], model, *broken, wi)) {
+        CheckRow row;
+        row.material = label;
+        row.test = test;
+        row.wiThetaDeg = wiTheta;
+        row.passed = true;
+        row.note = *noOp;
+        report.rows.push_back(row);
+        continue;
+      }
+      ChiSquareOptions chiOptions;
+      chiOptions.grid = grid;
+      chiOptions.sampleCount = options.samples;
+      chiOptions.seed = deriveSeed(options.seed, k);
+      chiOptions.threshold = threshold;
+      chiOptions.quadrature = kitQuadrature(options.samples);
+      const ChiSquareResult r = bsdfChiSquareTest(*broken, wi, chiOptions);
+      CheckRow row = chiSquareRow(label, test, wiTheta, r);
+      // This row passes when the kit rejects the broken sampler.
+      row.passed = !r.passed;
+      row.note = (r.passed ? "NOT rejected: the kit cannot see this error here" : "rejected") +
+                 (r.failure.empty() ? std::string() : " (" + r.failure + ")");
+      report.rows.push_back(row);
+    }
+  }
+  return report;
+}
+
+}  // namespace scatterlab

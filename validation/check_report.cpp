@@ -1,0 +1,58 @@
+#include "validation/check_report.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+namespace scatterlab {
+
+bool CheckReport::passed() const {
+  for (const CheckRow& row : rows)
+    if (!row.passed) return false;
+  return true;
+}
+
+std::string formatTable(const CheckReport& report) {
+  std::string out;
+  char line[512];
+  std::string current;
+  for (const CheckRow& row : report.rows) {
+    if (row.material != current || out.empty()) {
+      current = row.material;
+      out += '\n';
+      out += current;
+      out += '\n';
+      std::snprintf(line, sizeof line, "  %-36s %7s %13s %6s %10s %10s  %s\n", "test", "wi(deg)", "statistic", "dof",
+                    "p-value", "threshold", "result");
+      out += line;
+    }
+    const std::string wi = row.wiThetaDeg ? std::to_string(*row.wiThetaDeg).substr(0, 5) : "-";
+    const std::string dof = row.dof ? std::to_string(*row.dof) : "-";
+    char p[32] = "-";
+    if (row.pValue) std::snprintf(p, sizeof p, "%.4g", *row.pValue);
+    std::snprintf(line, sizeof line, "  %-36s %7s %13.6g %6s %10s %10.3g  %s  %s\n", row.test.c_str(), wi.c_str(),
+                  row.statistic, dof.c_str(), p, row.threshold, row.passed ? "PASS" : "FAIL", row.note.c_str());
+    out += line;
+  }
+  size_t failed = 0;
+  for (const CheckRow& row : report.rows) failed += row.passed ? 0 : 1;
+  out += "\n" + std::to_string(report.rows.size() - failed) + " passed, " + std::to_string(failed) + " failed\n";
+  return out;
+}
+
+nlohmann::json toJson(const CheckReport& report) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const CheckRow& row : report.rows) {
+    nlohmann::json j = {{"material", row.material}, {"test", row.test},         {"statistic", row.statistic},
+                        {"threshold", row.threshold}, {"passed", row.passed}, {"note", row.note}};
+    j["wi_theta_deg"] = row.wiThetaDeg ? nlohmann::json(*row.wiThetaDeg) : nlohmann::json(nullptr);
+    j["dof"] = row.dof ? nlohmann::json(*row.dof) : nlohmann::json(nullptr);
+    j["p_value"] = row.pValue ? nlohmann::json(*row.pValue) : nlohmann::json(nullptr);
+    // JSON has no NaN/inf: a non-finite statistic is written as a string.
+    if (!std::isfinite(row.statistic)) j["statistic"] = std::to_string(row.statistic);
+    rows.push_back(std::move(j));
+  }
+  return {{"passed", report.passed()}, {"rows", std::move(rows)}};
+}
+
+}  // namespace scatterlab

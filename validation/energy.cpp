@@ -1,0 +1,32 @@
+#include "validation/energy.h"
+
+namespace scatterlab {
+
+double normalisationTolerance(double failureProbability, size_t samples) {
+  const double p = failureProbability;
+  return std::max(1e-3, 4.0 * std::sqrt(p * (1.0 - p) / double(std::max<size_t>(samples, 1))));
+}
+
+EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals, const SampleHistogram& histogram) {
+  EnergyResult r;
+  glm::dvec4 total(0.0);
+  for (const glm::dvec4& v : cellIntegrals) total += v;
+  r.pdfIntegral = total.x;
+  r.albedo = Rgb(total.y, total.z, total.w);
+  for (const DeltaDirection& d : histogram.deltas) {
+    r.deltaProbability += d.probability;
+    r.albedo += d.probability * d.weight;  // E[weight] restricted to the delta lobe
+  }
+  r.failureProbability = double(histogram.failedSamples) / double(std::max<size_t>(histogram.sampleCount, 1));
+  r.normalisationError = std::abs(r.pdfIntegral + r.deltaProbability - (1.0 - r.failureProbability));
+  r.normalisationTolerance = normalisationTolerance(r.failureProbability, histogram.sampleCount);
+  return r;
+}
+
+std::vector<double> pdfPart(const std::vector<glm::dvec4>& cellIntegrals) {
+  std::vector<double> out(cellIntegrals.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i] = cellIntegrals[i].x;
+  return out;
+}
+
+}  // namespace scatterlab
