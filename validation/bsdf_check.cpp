@@ -196,7 +196,7 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
   row.threshold = ReciprocityTolerance;
   if (model.isReciprocal()) {
     const ReciprocityResult r =
-        checkReciprocity(model, size_t(options.reciprocityPairs), deriveSeed(options.seed, 1000));
+        checkReciprocity(model, size_t(options.reciprocityPairs), deriveSeed(options.seed, 1000), model.interiorIndex());
     row.statistic = r.maxError;
     row.passed = r.passed();
     row.note = std::to_string(r.pairs) + " random pairs over the sphere" + (r.worst.empty() ? "" : "; " + r.worst);

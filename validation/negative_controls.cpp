@@ -127,7 +127,7 @@ std::string toString(NegativeControl control) {
     case NegativeControl::PdfHighOnHalf: return "pdf +5% on half the sphere";
     case NegativeControl::MissingJacobian: return "missing half-vector Jacobian";
     case NegativeControl::SwappedDirections: return "wi/wo swapped in pdf";
-    case NegativeControl::RoughnessMismatch: return "sampler alpha 10% larger";
+    case NegativeControl::RoughnessMismatch: return "sampler alpha 10% off";
   }
   return "unknown";
 }

@@ -18,7 +18,7 @@ enum class NegativeControl {
                      // direction, that holds about half of the samples at the given wi
   MissingJacobian,   // pdf() lacks the half-vector Jacobian 1/(4 |wo.h|)
   SwappedDirections, // pdf() evaluated as pdf(wo, wi)
-  RoughnessMismatch, // sample() drawn from a model with alpha 10% larger than pdf()'s
+  RoughnessMismatch, // sample() drawn from a model whose alpha is 10% off pdf()'s
 };
 std::string toString(NegativeControl control);
 std::vector<NegativeControl> allNegativeControls();

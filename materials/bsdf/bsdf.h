@@ -79,6 +79,10 @@ class BsdfModel {
   virtual bool isLossless() const { return false; }
   // True when f(wi, wo) = f(wo, wi) (BRDF) or the generalised relation holds (BTDF).
   virtual bool isReciprocal() const { return true; }
+  // Index of refraction below the surface (z < 0) relative to above; 1 for models without
+  // transmission. The generalised reciprocity check divides f by the squared index on the
+  // side of each direction (Veach 1997, eq. 5.14).
+  virtual double interiorIndex() const { return 1.0; }
 };
 
 // A model placed on a surface: owns the shading frame and converts world <-> local.

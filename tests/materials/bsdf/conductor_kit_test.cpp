@@ -101,7 +101,7 @@ class ConductorNegativeControls : public ::testing::TestWithParam<ControlCase> {
 TEST_P(ConductorNegativeControls, AreAllRejected) {
   const ControlCase& c = GetParam();
   const auto model = makeGold(c.conductor);
-  const auto sampler = makeGold(c.conductor, 1.1);  // alpha 10% larger in the sampler
+  const auto sampler = makeGold(c.conductor, 1.1);  // alpha 10% larger in the sampler (all cases < 0.9)
   BsdfCheckOptions o = suiteOptions();
   o.wiThetaDeg = {c.wiTheta};
   const CheckReport report = runNegativeControls(*model, sampler.get(), name(c.conductor), o);
