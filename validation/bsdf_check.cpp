@@ -52,21 +52,6 @@ CheckRow makeRow(const std::string& label, const std::string& test, double wiThe
   return row;
 }
 
-// The chi-square verdict with the histogram's hard failures folded in.
-ChiSquareResult chiSquareVerdict(const SampleHistogram& histogram, const std::vector<double>& pdfIntegrals,
-                                 const SphericalGrid& grid, size_t n, double threshold) {
-  ChiSquareResult r = chiSquareFromTables(histogram.counts, expectedCounts(grid, pdfIntegrals, histogram.deltas, n), n,
-                                          threshold);
-  if (histogram.invalidSamples > 0) {
-    r.passed = false;
-    r.failure = std::to_string(histogram.invalidSamples) + " invalid samples, first: " + histogram.firstInvalid;
-  } else if (!histogram.deltaMismatch.empty()) {
-    r.passed = false;
-    r.failure = histogram.deltaMismatch;
-  }
-  return r;
-}
-
 CheckRow chiSquareRow(const std::string& label, const std::string& test, double wiTheta, const ChiSquareResult& r) {
   CheckRow row = makeRow(label, test, wiTheta, r.statistic, r.threshold, r.passed,
                          r.failure.empty() ? std::to_string(r.pooledCells) + " cells pooled" : r.failure);

@@ -155,6 +155,20 @@ ChiSquareResult chiSquareFromTables(const Table2D& observed, const Table2D& expe
   return r;
 }
 
+ChiSquareResult chiSquareVerdict(const SampleHistogram& histogram, const std::vector<double>& pdfIntegrals,
+                                 const SphericalGrid& grid, size_t sampleCount, double threshold, double minExpected) {
+  ChiSquareResult r = chiSquareFromTables(histogram.counts, expectedCounts(grid, pdfIntegrals, histogram.deltas, sampleCount),
+                                          sampleCount, threshold, minExpected);
+  if (histogram.invalidSamples > 0) {
+    r.passed = false;
+    r.failure = std::to_string(histogram.invalidSamples) + " invalid samples, first: " + histogram.firstInvalid;
+  } else if (!histogram.deltaMismatch.empty()) {
+    r.passed = false;
+    r.failure = histogram.deltaMismatch;
+  }
+  return r;
+}
+
 double sidakSignificance(double alpha, int testCount) {
   if (testCount <= 1) return alpha;
   // 1 - (1 - alpha)^(1/m), via log1p/expm1: the naive form loses digits for large m.

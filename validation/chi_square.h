@@ -200,22 +200,20 @@ struct ChiSquareOptions {
 Table2D expectedCounts(const SphericalGrid& grid, const std::vector<double>& pdfIntegrals,
                        const std::vector<DeltaDirection>& deltas, size_t sampleCount);
 
+// The verdict for a histogram and the per-cell pdf integrals: chiSquareFromTables, plus the
+// histogram's hard failures (invalid samples, one delta direction with two probabilities),
+// which reject whatever the statistic says.
+ChiSquareResult chiSquareVerdict(const SampleHistogram& histogram, const std::vector<double>& pdfIntegrals,
+                                 const SphericalGrid& grid, size_t sampleCount, double threshold,
+                                 double minExpected = 5.0);
+
 // The whole test for `draw(CounterRng&) -> optional<DirectionSample>` against `pdf(w)`.
 template <typename DrawFn, typename PdfFn>
 ChiSquareResult sphericalChiSquareTest(const DrawFn& draw, const PdfFn& pdf, const ChiSquareOptions& options) {
   const SampleHistogram histogram = drawSamples(options.grid, draw, options.sampleCount, options.seed);
   const std::vector<double> integrals = integrateCells(options.grid, pdf, histogram.probes, options.quadrature);
-  ChiSquareResult result =
-      chiSquareFromTables(histogram.counts, expectedCounts(options.grid, integrals, histogram.deltas, options.sampleCount),
-                          options.sampleCount, options.threshold, options.minExpected);
-  if (histogram.invalidSamples > 0) {
-    result.passed = false;
-    result.failure = std::to_string(histogram.invalidSamples) + " invalid samples, first: " + histogram.firstInvalid;
-  } else if (!histogram.deltaMismatch.empty()) {
-    result.passed = false;
-    result.failure = histogram.deltaMismatch;
-  }
-  return result;
+  return chiSquareVerdict(histogram, integrals, options.grid, options.sampleCount, options.threshold,
+                          options.minExpected);
 }
 
 }  // namespace scatterlab

@@ -1,0 +1,53 @@
+// Oren-Nayar: the angle-free kernel against pbrt-v3's angle form, reciprocity, and the whole
+// kit from smooth (sigma 0, Lambertian) to the roughest sigma = pi/2, wi up to 89.9 degrees.
+#include <gtest/gtest.h>
+
+#include "materials/bsdf/oren_nayar.h"
+#include "validation/bsdf_check.h"
+
+namespace scatterlab {
+namespace {
+
+// pbrt-v3 OrenNayar::f, written with angles, computed independently of the kernel.
+double orenNayarByAngles(double albedo, double sigma, const Vec3d& wi, const Vec3d& wo) {
+  const double s2 = sigma * sigma;
+  const double a = 1.0 - s2 / (2.0 * (s2 + 0.33)), b = 0.45 * s2 / (s2 + 0.09);
+  const double thetaI = std::acos(wi.z), thetaO = std::acos(wo.z);
+  const double dPhi = std::atan2(wi.y, wi.x) - std::atan2(wo.y, wo.x);
+  const double alpha = std::max(thetaI, thetaO), beta = std::min(thetaI, thetaO);
+  return albedo / Pi * (a + b * std::max(0.0, std::cos(dPhi)) * std::sin(alpha) * std::tan(beta));
+}
+
+TEST(OrenNayar, EqualsTheAngleFormAndIsReciprocal) {
+  for (double sigma : {0.0, 0.2, 0.6, PiOver2}) {
+    const OrenNayarBsdf model(Rgb(0.7), sigma);
+    for (auto [ti, pi, to, po] : std::vector<std::array<double, 4>>{
+             {10, 0, 50, 20}, {70, 30, 20, 10}, {85, 0, 85, 180}, {40, 90, 60, 250}, {0.5, 0, 30, 0}}) {
+      const Vec3d wi = directionFromDegrees(ti, pi), wo = directionFromDegrees(to, po);
+      EXPECT_NEAR(model.eval(wi, wo).x, orenNayarByAngles(0.7, sigma, wi, wo), 1e-12);
+      EXPECT_DOUBLE_EQ(model.eval(wi, wo).x, model.eval(wo, wi).x);
+    }
+  }
+  EXPECT_DOUBLE_EQ(OrenNayarBsdf(Rgb(0.7), 0.0).eval(directionFromDegrees(30, 0), directionFromDegrees(60, 0)).x,
+                   0.7 / Pi);
+  EXPECT_EQ(OrenNayarBsdf(Rgb(0.7), 0.3).eval(directionFromDegrees(30, 0), Vec3d(0, 0.6, -0.8)), Rgb(0.0));
+  EXPECT_FALSE(OrenNayarBsdf(Rgb(0.7), 0.3).sample(Vec3d(0, 0, -1), 0.5, {0.5, 0.5}));
+}
+
+TEST(OrenNayarKit, PassesFromSmoothToRoughest) {
+  const std::vector<double> sigmas{0.0, 0.35, PiOver2};
+  BsdfCheckOptions o;
+  o.wiThetaDeg = {0, 45, 80, 89.9};
+  o.samples = 1'000'000;
+  o.thetaBins = 64;
+  o.phiBins = 128;
+  o.seed = 7;
+  o.chiSquareTestCount = int(sigmas.size() * o.wiThetaDeg.size());
+  for (double sigma : sigmas) {
+    const CheckReport report = runBsdfChecks(OrenNayarBsdf(Rgb(1.0), sigma), "oren-nayar-" + std::to_string(sigma), o);
+    EXPECT_TRUE(report.passed()) << formatTable(report);
+  }
+}
+
+}  // namespace
+}  // namespace scatterlab
