@@ -36,7 +36,8 @@ std::string formatTable(const CheckReport& report) {
   }
   size_t failed = 0;
   for (const CheckRow& row : report.rows) failed += row.passed ? 0 : 1;
-  out += "\n" + std::to_string(report.rows.size() - failed) + " passed, " + std::to_string(failed) + " failed\n";
+  std::snprintf(line, sizeof line, "\n%zu passed, %zu failed\n", report.rows.size() - failed, failed);
+  out += line;
   return out;
 }
 

@@ -59,24 +59,19 @@ class NganCookTorranceBsdf final : public BsdfModel {
   }
 
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
-    if (!(wi.z > 0) || !(wo.z > 0)) return 0.0;
-    const Vec3d h = reflectionHalfVector(wi, wo);
-    return reflectedDensity(distribution_.pdfClassic(h), wo, h);
+    return classicReflectionPdf(distribution_, wi, wo);
   }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override {
-    if (!(wi.z > 0)) return std::nullopt;
-    const Vec3d wo = reflect(wi, distribution_.sampleClassic(u));
-    if (!(wo.z > 0)) return std::nullopt;
-    const Vec3d h = reflectionHalfVector(wi, wo);
-    const double density = reflectedDensity(distribution_.pdfClassic(h), wo, h);
-    if (!(density > 0)) return std::nullopt;
+    const std::optional<ReflectionSample> s = sampleClassicReflection(distribution_, wi, u);
+    if (!s) return std::nullopt;
+    const Vec3d &wo = s->wo, &h = s->h;
     // f cos_o / pdf with D and cos_o cancelled: albedo G F 4 (wo.h) / (pi cos_i h.z).
     const double cosIH = glm::dot(wi, h), cosOH = glm::dot(wo, h);
     const double fresnel = fresnelSchlick(f0_, 0.5 * (cosIH + cosOH));
     const double factor = vGrooveShadowing(wi, wo, h) * fresnel * 4.0 * cosOH / (Pi * wi.z * h.z);
-    return BsdfSample{wo, albedo_ * factor, density, LobeFlags::GlossyReflection, 1.0};
+    return BsdfSample{wo, albedo_ * factor, s->pdf, LobeFlags::GlossyReflection, 1.0};
   }
 
   LobeFlags flags() const override { return LobeFlags::GlossyReflection; }

@@ -4,6 +4,9 @@
 // (n+2) / (2 pi max(Cz^2, Cxy^2)^(n/2)) (bsdfbenchmark include/bsdfmodel/ngan.h).
 #pragma once
 
+#include <array>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "materials/bsdf/cosine_lobe.h"
@@ -57,8 +60,15 @@ RgbT<T> lafortuneEval(const RgbT<T>& kd, const std::vector<LafortuneLobeT<T>>& l
 // samples (n+1)/(2 pi) cos^n about its axis normalize(C * wi). pdf = the weighted mixture.
 class LafortuneBsdf final : public BsdfModel {
  public:
+  // Lobe weights live in a fixed array so that pdf() and sample() never allocate.
+  static constexpr size_t MaxLobes = 8;
+
   LafortuneBsdf(const Rgb& kd, std::vector<LafortuneLobe> lobes, LafortuneNormalization normalization)
-      : kd_(kd), lobes_(std::move(lobes)), normalization_(normalization) {}
+      : kd_(kd), lobes_(std::move(lobes)), normalization_(normalization) {
+    if (lobes_.size() > MaxLobes)
+      throw std::invalid_argument("a Lafortune BRDF has at most " + std::to_string(MaxLobes) + " lobes, got " +
+                                  std::to_string(lobes_.size()));
+  }
 
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
     return lafortuneEval(kd_, lobes_, normalization_, wi, wo);
@@ -97,14 +107,13 @@ class LafortuneBsdf final : public BsdfModel {
  private:
   struct Weights {
     double diffuse = 0, total = 0;
-    std::vector<double> lobe;
+    std::array<double, MaxLobes> lobe{};
   };
   Vec3d axis(size_t i, const Vec3d& wi) const { return glm::normalize(lobes_[i].c * wi); }
   Weights weights(const Vec3d& wi) const {
     Weights w;
     w.diffuse = channelMean(kd_);
     w.total = w.diffuse;
-    w.lobe.resize(lobes_.size(), 0.0);
     for (size_t i = 0; i < lobes_.size(); ++i) {
       const LafortuneLobe& l = lobes_[i];
       const double reach = glm::length(l.c * wi);

@@ -67,27 +67,21 @@ class WardBsdf final : public BsdfModel {
   }
 
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
-    if (!(wi.z > 0) || !(wo.z > 0)) return 0.0;
-    const Vec3d h = reflectionHalfVector(wi, wo);
-    return reflectedDensity(distribution_.pdfClassic(h), wo, h);
+    return classicReflectionPdf(distribution_, wi, wo);
   }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override {
-    if (!(wi.z > 0)) return std::nullopt;
-    const Vec3d wo = reflect(wi, distribution_.sampleClassic(u));
-    if (!(wo.z > 0)) return std::nullopt;
-    // pdf and weight from (wi, wo) exactly as pdf() and eval() compute them; D cancels in the
-    // weight, which stays finite where D underflows.
-    const Vec3d h = reflectionHalfVector(wi, wo);
-    const double density = reflectedDensity(distribution_.pdfClassic(h), wo, h);
-    if (!(density > 0)) return std::nullopt;
+    // D cancels in the weight, which stays finite where D underflows.
+    const std::optional<ReflectionSample> s = sampleClassicReflection(distribution_, wi, u);
+    if (!s) return std::nullopt;
+    const Vec3d &wo = s->wo, &h = s->h;
     const double cosOH = glm::dot(wo, h);
     // GM: rho D / (4 (wi.h)^2) * cos_o * 4 (wo.h) / (D h.z) = rho cos_o / ((wi.h) h.z).
     // Ngan: rho D h.z^4 / (4 sqrt(ci co)) * co * 4 (wo.h) / (D h.z) = rho h.z^3 (wo.h) sqrt(co/ci).
     const double factor = variant_ == WardVariant::Ngan ? h.z * h.z * h.z * cosOH * std::sqrt(wo.z / wi.z)
                                                         : wo.z / (glm::dot(wi, h) * h.z);
-    return BsdfSample{wo, albedo_ * factor, density, LobeFlags::GlossyReflection, 1.0};
+    return BsdfSample{wo, albedo_ * factor, s->pdf, LobeFlags::GlossyReflection, 1.0};
   }
 
   LobeFlags flags() const override { return LobeFlags::GlossyReflection; }

@@ -74,18 +74,25 @@ std::vector<LafortuneCase> grid() {
   };
 }
 
-TEST(LafortuneKit, PassesOverItsGrid) {
+// The kit at 1e6 samples costs about 2-3 s per (case, wi) on this machine; the test runs the
+// hard corners (the sharpest Ngan lobe at grazing incidence, two lobes) within CI's budget.
+void runLafortuneKit(const std::vector<std::pair<LafortuneCase, double>>& cases) {
   BsdfCheckOptions o;
-  o.wiThetaDeg = {0, 45, 80, 89.9};
   o.samples = 1'000'000;
   o.thetaBins = 64;
   o.phiBins = 128;
   o.seed = 13;
-  o.chiSquareTestCount = int(grid().size() * o.wiThetaDeg.size());
-  for (const LafortuneCase& c : grid()) {
+  o.chiSquareTestCount = int(cases.size());  // Sidak over this test's chi-square tests
+  for (const auto& [c, wi] : cases) {
+    o.wiThetaDeg = {wi};
     const CheckReport report = runBsdfChecks(LafortuneBsdf(c.kd, c.lobes, c.normalization), "lafortune-" + c.name, o);
     EXPECT_TRUE(report.passed()) << formatTable(report);
   }
+}
+
+TEST(LafortuneKit, PassesAtHardCorners) {
+  const auto cases = grid();
+  runLafortuneKit({{cases[2], 89.9}, {cases[4], 45.0}});  // n = 10000 grazing; two lobes
 }
 
 }  // namespace

@@ -34,20 +34,23 @@ TEST(OrenNayar, EqualsTheAngleFormAndIsReciprocal) {
   EXPECT_FALSE(OrenNayarBsdf(Rgb(0.7), 0.3).sample(Vec3d(0, 0, -1), 0.5, {0.5, 0.5}));
 }
 
-TEST(OrenNayarKit, PassesFromSmoothToRoughest) {
-  const std::vector<double> sigmas{0.0, 0.35, PiOver2};
+// The kit at 1e6 samples costs about 1-2 s per (sigma, wi) on this machine; the test runs the
+// hard corners (roughest at normal and grazing incidence, smooth at grazing) within CI's budget.
+void runOrenNayarKit(const std::vector<std::pair<double, double>>& sigmaAndWi) {
   BsdfCheckOptions o;
-  o.wiThetaDeg = {0, 45, 80, 89.9};
   o.samples = 1'000'000;
   o.thetaBins = 64;
   o.phiBins = 128;
   o.seed = 7;
-  o.chiSquareTestCount = int(sigmas.size() * o.wiThetaDeg.size());
-  for (double sigma : sigmas) {
+  o.chiSquareTestCount = int(sigmaAndWi.size());  // Sidak over this test's chi-square tests
+  for (auto [sigma, wi] : sigmaAndWi) {
+    o.wiThetaDeg = {wi};
     const CheckReport report = runBsdfChecks(OrenNayarBsdf(Rgb(1.0), sigma), "oren-nayar-" + std::to_string(sigma), o);
     EXPECT_TRUE(report.passed()) << formatTable(report);
   }
 }
+
+TEST(OrenNayarKit, PassesAtCorners) { runOrenNayarKit({{PiOver2, 89.9}, {PiOver2, 0.0}, {0.35, 45.0}, {0.0, 80.0}}); }
 
 }  // namespace
 }  // namespace scatterlab
