@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "app/progress.h"
 #include "app/showcase.h"
 #include "materials/bsdf/registry.h"
+#include "materials/measured/tabulated_brdf.h"
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
@@ -37,14 +39,9 @@ struct MaterialUnderTest {
   std::unique_ptr<BsdfModel> roughnessMismatchSampler;
 };
 
-// The sampler for the roughness-mismatch control. Scaling up is clamped at the largest
-// allowed roughness, where it would change nothing, and the control must be a real mismatch:
-// there, scale down instead.
 std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const json& material) {
-  const auto rougher = withScaledRoughness(material, RoughnessMismatchFactor);
-  if (!rougher) return nullptr;
-  if (*rougher != completeMaterial(material)) return makeBsdf(*rougher);
-  return makeBsdf(*withScaledRoughness(material, 1.0 / RoughnessMismatchFactor));
+  const auto mismatched = withMismatchedRoughness(material, RoughnessMismatchFactor);
+  return mismatched ? makeBsdf(*mismatched) : nullptr;
 }
 
 MaterialUnderTest prepareMaterial(std::string label, const json& material, bool negativeControls) {
@@ -116,11 +113,20 @@ json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit
           {"images", kit.imageDir ? json(kit.imageDir->string()) : json()}};
 }
 
+// A measured table's missing cells (negative in the file), which the fill rule of
+// tabulated_brdf.h replaces; nothing for other models.
+std::optional<size_t> missingCellsOf(const BsdfModel& model) {
+  const auto* table = dynamic_cast<const TabulatedBrdf*>(&model);
+  return table ? std::optional<size_t>(table->missingCells()) : std::nullopt;
+}
+
 void printJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit,
                const std::vector<MaterialUnderTest>& materials, const CheckReport& report) {
   json materialsJson = json::array();
-  for (const MaterialUnderTest& material : materials)
+  for (const MaterialUnderTest& material : materials) {
     materialsJson.push_back({{"label", material.label}, {"material", material.completed}});
+    if (const auto missing = missingCellsOf(*material.model)) materialsJson.back()["missing_cells"] = *missing;
+  }
   const json document{{"options", optionsJson(options, kit)},
                       {"materials", std::move(materialsJson)},
                       {"report", toJson(report)},
@@ -130,8 +136,12 @@ void printJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit,
 
 void printText(const std::vector<MaterialUnderTest>& materials, const CheckReport& report) {
   std::cout << "materials (every default filled in):\n";
-  for (const MaterialUnderTest& material : materials)
+  for (const MaterialUnderTest& material : materials) {
     std::cout << "  " << material.label << " = " << material.completed.dump() << "\n";
+    if (const auto missing = missingCellsOf(*material.model); missing && *missing > 0)
+      std::cout << "    " << *missing << " of " << merl::CellCount
+                << " cells missing in the file, filled from the nearest measured cell along theta_d\n";
+  }
   std::cout << formatTable(report);
   std::cout << "verdict: " << (report.passed() ? "PASS" : "FAIL") << "\n";
 }

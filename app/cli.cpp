@@ -6,7 +6,9 @@
 
 #include "app/check_command.h"
 #include "app/exit_code.h"
+#include "app/generate_table_command.h"
 #include "app/models_command.h"
+#include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
 
 namespace scatterlab {
@@ -40,12 +42,19 @@ int runCli(int argc, char** argv) {
   CheckCommandOptions checkOptions;
   const CLI::App* models = addModelsCommand(app, modelsOptions);
   const CLI::App* check = addCheckCommand(app, checkOptions);
+  SynthCommandOptions synthOptions;
+  const CLI::App* synth = addSynthCommand(app, synthOptions);
+
+  GenerateTableOptions generateTableOptions;  // a hidden developer command
+  const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
 
   // Nothing may escape: every failure is one message and an exit code (exit_code.h).
   try {
     app.parse(argc, argv);
     if (*models) return runModelsCommand(modelsOptions);
     if (*check) return runCheckCommand(checkOptions);
+    if (*generateTable) return runGenerateTableCommand(generateTableOptions);
+    if (*synth) return runSynthCommand(synthOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);

@@ -1,5 +1,6 @@
 #include "validation/bsdf_check.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "validation/heatmap.h"
 #include "validation/negative_controls.h"
 #include "validation/reciprocity.h"
+#include "validation/transport_modes.h"
 
 namespace scatterlab {
 namespace {
@@ -97,30 +99,58 @@ QuadratureOptions kitQuadrature(size_t samples) {
   return q;
 }
 
+bool hasTransmission(const BsdfModel& model) { return hasAny(model.flags(), LobeFlags::Transmission); }
+
+CheckRow consistencyRow(const std::string& label, const std::string& test, double wiTheta,
+                        const ConsistencyResult& consistency, size_t n) {
+  std::string note = format("%.0f samples, max weight error %.2e, max pdf error %.2e", double(n),
+                            consistency.maxWeightError, consistency.maxPdfError);
+  if (consistency.supportViolations)
+    note = std::to_string(consistency.supportViolations) + " of " + std::to_string(consistency.supportProbes) +
+           " directions have eval > 0 but pdf = 0; " + note;
+  if (!consistency.firstFailure.empty()) note += "; first failure: " + consistency.firstFailure;
+  return makeRow(label, test, wiTheta, std::max(consistency.maxWeightError, consistency.maxPdfError),
+                 ConsistencyTolerance, consistency.passed(), note);
+}
+
 CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
                                  double wiTheta, uint64_t seed, double threshold) {
   const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
   const SphericalGrid grid{options.thetaBins, options.phiBins};
   const size_t n = options.samples;
+  // Energy rows need importance transport through refractions (energyTransportMode says why).
+  // The histogram is drawn in that mode too, since its delta directions carry the weights
+  // that enter the albedo; the directions themselves do not depend on the mode (the
+  // "transport modes" row checks that).
+  const bool transmission = hasTransmission(model);
+  const TransportMode mode = energyTransportMode(model);
   CheckReport report;
 
-  const SampleHistogram histogram = drawSamples(grid, bsdfDirectionSampler(model, wi), n, seed);
+  const SampleHistogram histogram = drawSamples(grid, bsdfDirectionSampler(model, wi, mode), n, seed);
   const std::vector<glm::dvec4> cells =
-      integrateCells(grid, bsdfEnergyIntegrand(model, wi), histogram.probes, kitQuadrature(n));
+      integrateCells(grid, bsdfEnergyIntegrand(model, wi, mode), histogram.probes, kitQuadrature(n));
   const ChiSquareResult chi = chiSquareVerdict(histogram, pdfPart(cells), grid, n, threshold);
   report.rows.push_back(chiSquareRow(label, "chi2", wiTheta, chi));
 
-  const ConsistencyResult consistency = checkConsistency(model, wi, grid, n, seed);
-  {
-    std::string note = format("%.0f samples, max weight error %.2e, max pdf error %.2e", double(n),
-                              consistency.maxWeightError, consistency.maxPdfError);
-    if (consistency.supportViolations)
-      note = std::to_string(consistency.supportViolations) + " of " + std::to_string(consistency.supportProbes) +
-             " directions have eval > 0 but pdf = 0; " + note;
-    if (!consistency.firstFailure.empty()) note += "; first failure: " + consistency.firstFailure;
-    report.rows.push_back(makeRow(label, "consistency", wiTheta,
-                                  std::max(consistency.maxWeightError, consistency.maxPdfError), ConsistencyTolerance,
-                                  consistency.passed(), note));
+  // Weights must match eval |cos| / pdf in whichever mode a caller uses: with transmission,
+  // both modes are checked, and how they relate. The second mode's checks are per-sample
+  // identities (no statistics, no albedo estimate), so a quarter of the samples is enough.
+  const ConsistencyResult consistency = checkConsistency(model, wi, grid, n, seed, DefaultSupportProbes, mode);
+  report.rows.push_back(
+      consistencyRow(label, transmission ? "consistency (importance)" : "consistency", wiTheta, consistency, n));
+  if (transmission) {
+    const size_t nModes = std::max<size_t>(n / 4, std::min<size_t>(n, 10000));
+    const ConsistencyResult radiance =
+        checkConsistency(model, wi, grid, nModes, seed, DefaultSupportProbes, TransportMode::Radiance);
+    report.rows.push_back(consistencyRow(label, "consistency (radiance)", wiTheta, radiance, nModes));
+    const TransportModesResult modes = checkTransportModes(model, wi, nModes, seed);
+    std::string note = format("%.0f samples: same wo, pdf, lobe; eta = n(wo)/n(wi); radiance weight = importance "
+                              "weight / eta^2 (max error %.2e)",
+                              double(nModes), modes.maxWeightError);
+    if (!modes.firstFailure.empty())
+      note = std::to_string(modes.violations) + " violations, first: " + modes.firstFailure + "; " + note;
+    report.rows.push_back(
+        makeRow(label, "transport modes", wiTheta, modes.maxWeightError, ConsistencyTolerance, modes.passed(), note));
   }
 
   const EnergyResult energy = energyFromIntegrals(cells, histogram);
@@ -131,10 +161,12 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
              1.0 - energy.failureProbability)));
 
   const double maxAlbedo = std::max({energy.albedo.x, energy.albedo.y, energy.albedo.z});
+  const std::string quadratureMode = transmission ? "quadrature + deltas, importance transport" : "quadrature";
   report.rows.push_back(makeRow(label, "albedo", wiTheta, maxAlbedo, 1.0 + AlbedoTolerance,
                                 maxAlbedo <= 1.0 + AlbedoTolerance,
-                                format("directional albedo (quadrature) r %.5f g %.5f b %.5f", energy.albedo.x,
-                                       energy.albedo.y, energy.albedo.z) +
+                                "directional albedo (" + quadratureMode + ")" +
+                                    format(" r %.5f g %.5f b %.5f", energy.albedo.x, energy.albedo.y,
+                                           energy.albedo.z) +
                                     (model.isLossless() ? "" : format(", loses %.2f%% at least", 100 * (1 - maxAlbedo)))));
 
   double worstZ = 0;
@@ -162,34 +194,67 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
 
 }  // namespace
 
+std::vector<double> incidentAngles(const BsdfCheckOptions& options, const BsdfModel& model) {
+  std::vector<double> angles = options.wiThetaDeg;
+  if (!options.transmissionFromBelow || !hasTransmission(model)) return angles;
+  for (const double theta : options.wiThetaDeg) {
+    const double below = 180.0 - theta;
+    if (theta < 90.0 && std::find(angles.begin(), angles.end(), below) == angles.end()) angles.push_back(below);
+  }
+  return angles;
+}
+
 int chiSquareTestCount(const BsdfCheckOptions& options) { return int(options.wiThetaDeg.size()); }
+
+int chiSquareTestCount(const BsdfCheckOptions& options, const BsdfModel& model) {
+  return int(incidentAngles(options, model).size());
+}
 
 CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
                           const ProgressCallback& progress) {
   CheckReport report;
-  const double threshold = perTestThreshold(options, chiSquareTestCount(options));
-  const size_t steps = options.wiThetaDeg.size() + 1;
-  for (size_t k = 0; k < options.wiThetaDeg.size(); ++k) {
-    if (progress) progress(label + ": wi " + format("%g", options.wiThetaDeg[k]) + " deg", double(k) / steps);
-    report.append(checkAtIncidentAngle(model, label, options, options.wiThetaDeg[k], deriveSeed(options.seed, k),
-                                       threshold));
+  const std::vector<double> angles = incidentAngles(options, model);
+  const double threshold = perTestThreshold(options, int(angles.size()));
+  const size_t steps = angles.size() + 1;
+  for (size_t k = 0; k < angles.size(); ++k) {
+    if (progress) progress(label + ": wi " + format("%g", angles[k]) + " deg", double(k) / steps);
+    report.append(checkAtIncidentAngle(model, label, options, angles[k], deriveSeed(options.seed, k), threshold));
   }
   if (progress) progress(label + ": reciprocity", double(steps - 1) / steps);
-  CheckRow row;
-  row.material = label;
-  row.test = "reciprocity";
-  row.threshold = ReciprocityTolerance;
-  if (model.isReciprocal()) {
-    const ReciprocityResult r =
-        checkReciprocity(model, size_t(options.reciprocityPairs), deriveSeed(options.seed, 1000), model.interiorIndex());
-    row.statistic = r.maxError;
-    row.passed = r.passed();
-    row.note = std::to_string(r.pairs) + " random pairs over the sphere" + (r.worst.empty() ? "" : "; " + r.worst);
-  } else {
-    row.passed = true;
-    row.note = "not reciprocal by design (listed, not tested)";
+  // Through a refraction the relation depends on the transport mode (reciprocity.h): models
+  // with transmission get all three forms, each a row.
+  struct Relation {
+    const char* test;
+    ReciprocityRelation relation;
+    const char* what;
+  };
+  std::vector<Relation> relations{{"reciprocity", ReciprocityRelation::Radiance, "f(wi,wo) = f(wo,wi)"}};
+  if (hasTransmission(model))
+    relations = {{"reciprocity (radiance)", ReciprocityRelation::Radiance, "f(wi,wo)/n(wi)^2 = f(wo,wi)/n(wo)^2"},
+                 {"reciprocity (importance)", ReciprocityRelation::Importance, "f(wi,wo)/n(wo)^2 = f(wo,wi)/n(wi)^2"},
+                 {"adjoint", ReciprocityRelation::Adjoint, "f(wi,wo,radiance) = f(wo,wi,importance)"}};
+  // A model made of delta lobes has eval = 0 for every pair: the rows pass trivially, and say so.
+  const bool deltaOnly = !hasAny(model.flags(), LobeFlags::Diffuse | LobeFlags::Glossy);
+  for (const Relation& relation : relations) {
+    CheckRow row;
+    row.material = label;
+    row.test = relation.test;
+    row.threshold = ReciprocityTolerance;
+    if (model.isReciprocal()) {
+      const ReciprocityResult r = checkReciprocity(model, size_t(options.reciprocityPairs),
+                                                   deriveSeed(options.seed, 1000), model.interiorIndex(),
+                                                   relation.relation);
+      row.statistic = r.maxError;
+      row.passed = r.passed();
+      row.note = std::string(relation.what) + " on " + std::to_string(r.pairs) + " random pairs over the sphere" +
+                 (deltaOnly ? " (delta lobes only: eval is 0 everywhere, nothing to compare)" : "") +
+                 (r.worst.empty() ? "" : "; " + r.worst);
+    } else {
+      row.passed = true;
+      row.note = "not reciprocal by design (listed, not tested)";
+    }
+    report.rows.push_back(row);
   }
-  report.rows.push_back(row);
   if (progress) progress(label + ": done", 1.0);
   return report;
 }
@@ -197,7 +262,9 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
 CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler, const std::string& label,
                                 const BsdfCheckOptions& options, const ProgressCallback& progress) {
   CheckReport report;
-  const double threshold = perTestThreshold(options, chiSquareTestCount(options));
+  const std::vector<double> angles = incidentAngles(options, model);
+  const double threshold = perTestThreshold(options, int(angles.size()));
+  const TransportMode mode = energyTransportMode(model);
   const SphericalGrid grid{options.thetaBins, options.phiBins};
   const auto controls = allNegativeControls();
   for (size_t c = 0; c < controls.size(); ++c) {
@@ -207,15 +274,15 @@ CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* altered
       row.material = label;
       row.test = test;
       row.passed = true;
-      row.note = "not applicable: the model has no roughness parameter";
+      row.note = "not applicable: the model has no lobe-width parameter";
       report.rows.push_back(row);
       continue;
     }
-    for (size_t k = 0; k < options.wiThetaDeg.size(); ++k) {
-      const double wiTheta = options.wiThetaDeg[k];
+    for (size_t k = 0; k < angles.size(); ++k) {
+      const double wiTheta = angles[k];
       if (progress)
         progress(label + ": " + test + " wi " + format("%g", wiTheta),
-                 double(c * options.wiThetaDeg.size() + k) / double(controls.size() * options.wiThetaDeg.size()));
+                 double(c * angles.size() + k) / double(controls.size() * angles.size()));
       const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
       const std::unique_ptr<BsdfModel> broken = makeNegativeControl(controls[c], model, wi, alteredSampler);
       if (const std::optional<std::string> noOp = negativeControlIsNoOp(controls[c], model, *broken, wi)) {
@@ -234,7 +301,7 @@ CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* altered
       chiOptions.seed = deriveSeed(options.seed, k);
       chiOptions.threshold = threshold;
       chiOptions.quadrature = kitQuadrature(options.samples);
-      const ChiSquareResult r = bsdfChiSquareTest(*broken, wi, chiOptions);
+      const ChiSquareResult r = bsdfChiSquareTest(*broken, wi, chiOptions, mode);
       CheckRow row = chiSquareRow(label, test, wiTheta, r);
       // This row passes when the kit rejects the broken sampler.
       row.passed = !r.passed;

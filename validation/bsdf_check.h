@@ -2,6 +2,12 @@
 // chi-square of sample() against pdf(), per-sample consistency, pdf normalisation,
 // directional albedo <= 1 (quadrature and Monte Carlo), white furnace for lossless models,
 // and reciprocity. Used by `scatterlab check` and by the model tests.
+//
+// Models with transmission (flags() has Transmission) also get: incident directions from
+// inside the medium (180 - theta), energy rows in importance transport (bsdf_sampling.h
+// energyTransportMode), consistency in both transport modes and the relation between them
+// ("transport modes", transport_modes.h), and the generalised reciprocity in both modes plus
+// the adjoint relation (reciprocity.h).
 #pragma once
 
 #include <cstdint>
@@ -28,6 +34,10 @@ struct BsdfCheckOptions {
   std::optional<std::filesystem::path> imageDir;  // write observed/expected/residual PNGs here
   bool imagesOnFailureOnly = false;
   int reciprocityPairs = 10000;
+  // Models with transmission are also checked from inside the medium: each angle theta < 90
+  // of wiThetaDeg is repeated as 180 - theta (wi.z < 0), and the rows show that angle.
+  // Angles above 90 may also be listed directly.
+  bool transmissionFromBelow = true;
 };
 
 // stage: what is running ("chi2 wi=60"), fraction in [0, 1] of this material's checks.
@@ -38,14 +48,21 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
                           const ProgressCallback& progress = {});
 
 // The negative controls (negative_controls.h) of `model`, each run through the chi-square
-// test at every incident angle; a row PASSES when the kit REJECTS the broken sampler.
-// `alteredSampler` (the same material with alpha x 1.1) enables RoughnessMismatch; without
+// test at every incident angle (incidentAngles(): with transmission, from below too); a row
+// PASSES when the kit REJECTS the broken sampler.
+// `alteredSampler` (the same material 10% rougher, registry.h withMismatchedRoughness) enables RoughnessMismatch; without
 // it that control is reported as not applicable (a row with passed = true and a note).
 CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler, const std::string& label,
                                 const BsdfCheckOptions& options, const ProgressCallback& progress = {});
 
 // Number of chi-square tests runBsdfChecks will perform with these options (for the
-// Sidak correction when several materials are checked together).
+// Sidak correction when several materials are checked together): the listed angles for a
+// model without transmission...
 int chiSquareTestCount(const BsdfCheckOptions& options);
+// ...and for `model`, whose transmission adds the angles from below.
+int chiSquareTestCount(const BsdfCheckOptions& options, const BsdfModel& model);
+
+// The incident polar angles runBsdfChecks and runNegativeControls use for `model`, in order.
+std::vector<double> incidentAngles(const BsdfCheckOptions& options, const BsdfModel& model);
 
 }  // namespace scatterlab

@@ -10,21 +10,33 @@
 
 namespace scatterlab {
 
+// The transport mode of the kit's energy checks (albedo, Monte Carlo albedo, furnace) and of
+// the histogram whose delta weights enter the albedo. Through a refraction, radiance is
+// scaled by 1 / etaRel^2 (the refracted beam's solid angle changes; Veach 1997 section 5.2):
+// radiance is not a conserved quantity, and its "albedo" exceeds 1 for light leaving a denser
+// medium although no energy is created. Power is conserved, and importance transport carries
+// it: integral of f(wi, wo, Importance) |cos wo| dwo is the fraction of the power arriving
+// from wi that is scattered. For reflection the two modes agree.
+template <typename Model> TransportMode energyTransportMode(const Model& model) {
+  return hasAny(model.flags(), LobeFlags::Transmission) ? TransportMode::Importance : TransportMode::Radiance;
+}
+
 // One draw of the model's sampler with the kit's random numbers: uLobe first, then u.
 // Both the histogram pass and the consistency pass use this, so sample i is the same in both.
 template <typename Model>
-std::optional<BsdfSample> drawBsdfSample(const Model& model, const Vec3d& wi, CounterRng& rng) {
+std::optional<BsdfSample> drawBsdfSample(const Model& model, const Vec3d& wi, CounterRng& rng,
+                                         TransportMode mode = TransportMode::Radiance) {
   const double uLobe = rng.uniform();
   const Vec2d u = rng.uniform2D();
-  return model.sample(wi, uLobe, u, TransportMode::Radiance);
+  return model.sample(wi, uLobe, u, mode);
 }
 
 inline bool isValidWeight(const Rgb& w) { return isFinite(w) && w.x >= 0 && w.y >= 0 && w.z >= 0; }
 
 template <typename Model>
-auto bsdfDirectionSampler(const Model& model, const Vec3d& wi) {
-  return [&model, wi](CounterRng& rng) -> std::optional<DirectionSample> {
-    const std::optional<BsdfSample> s = drawBsdfSample(model, wi, rng);
+auto bsdfDirectionSampler(const Model& model, const Vec3d& wi, TransportMode mode = TransportMode::Radiance) {
+  return [&model, wi, mode](CounterRng& rng) -> std::optional<DirectionSample> {
+    const std::optional<BsdfSample> s = drawBsdfSample(model, wi, rng, mode);
     if (!s) return std::nullopt;
     DirectionSample d{s->wo, s->pdf, s->isDelta(), s->weight};
     if (!isValidWeight(s->weight)) d.invalid = "sample weight is negative or not finite";
@@ -34,9 +46,10 @@ auto bsdfDirectionSampler(const Model& model, const Vec3d& wi) {
 
 // The chi-square test of one model at one incident direction.
 template <typename Model>
-ChiSquareResult bsdfChiSquareTest(const Model& model, const Vec3d& wi, const ChiSquareOptions& options) {
-  return sphericalChiSquareTest(bsdfDirectionSampler(model, wi), [&](const Vec3d& wo) { return model.pdf(wi, wo, TransportMode::Radiance); },
-                                options);
+ChiSquareResult bsdfChiSquareTest(const Model& model, const Vec3d& wi, const ChiSquareOptions& options,
+                                  TransportMode mode = TransportMode::Radiance) {
+  return sphericalChiSquareTest(bsdfDirectionSampler(model, wi, mode),
+                                [&](const Vec3d& wo) { return model.pdf(wi, wo, mode); }, options);
 }
 
 }  // namespace scatterlab

@@ -23,7 +23,7 @@
 #include <tbb/parallel_for.h>
 
 #include "materials/core/rng.h"
-#include "validation/quadrature.h"
+#include "materials/core/quadrature.h"
 #include "validation/spherical_grid.h"
 
 namespace scatterlab {
@@ -131,6 +131,12 @@ template <int N> double scalarPart(const glm::vec<N, double>& v) { return v[0]; 
 // narrower than the quadrature's first grid, but where the sampler put samples, is found by
 // the quadrature's initial points. Probes only steer where the quadrature looks; the values
 // are integrals of the integrand alone. Cells are independent, so this is deterministic.
+//
+// At a pole, cos(theta) squares the lobe's width: a lobe of angular radius r is r^2 / 2 wide
+// there (a rough dielectric's refracted lobe at normal incidence, (1 - 1/eta) times narrower
+// than its facets, reaches 1e-9), below the finest step adaptive Simpson takes in a whole
+// cell. A pole cell whose probe lies at d from the pole is therefore also cut at 4 d, 16 d,
+// 64 d, ... from it, so that the pieces grow geometrically from the lobe's scale.
 template <typename Integrand>
 auto integrateCells(const SphericalGrid& grid, const Integrand& integrand, const std::vector<Vec2d>& probes,
                     const QuadratureOptions& options) {
@@ -139,18 +145,24 @@ auto integrateCells(const SphericalGrid& grid, const Integrand& integrand, const
   tbb::parallel_for(tbb::blocked_range<int>(0, grid.cellCount(), 16), [&](const tbb::blocked_range<int>& range) {
     for (int cell = range.begin(); cell != range.end(); ++cell) {
       const int r = cell / grid.phiBins, c = cell % grid.phiBins;
-      double cosCuts[4] = {grid.cosThetaEdge(r), 0, 0, 0}, phiCuts[3] = {grid.phiEdge(c), 0, 0};
-      int nCos = 1, nPhi = 1;
-      const double cosHi = grid.cosThetaEdge(r + 1), phiHi = grid.phiEdge(c + 1);
+      constexpr int MaxCosCuts = 40;  // edges, horizon, probe and up to 35 pole cuts (4^35 >> 1/ulp)
+      double cosCuts[MaxCosCuts], phiCuts[3] = {grid.phiEdge(c), 0, 0};
+      int nCos = 0, nPhi = 1;
+      const double cosLo = grid.cosThetaEdge(r), cosHi = grid.cosThetaEdge(r + 1), phiHi = grid.phiEdge(c + 1);
       const Vec2d probe = probes.empty() ? Vec2d(NAN) : probes[cell];
-      // Sorted, strictly interior split points.
-      double interior[2];
-      int nInterior = 0;
-      if (cosCuts[0] < 0.0 && 0.0 < cosHi) interior[nInterior++] = 0.0;
-      if (cosCuts[0] < probe.x && probe.x < cosHi && probe.x != 0.0) interior[nInterior++] = probe.x;
-      if (nInterior == 2 && interior[0] > interior[1]) std::swap(interior[0], interior[1]);
-      for (int k = 0; k < nInterior; ++k) cosCuts[nCos++] = interior[k];
+      cosCuts[nCos++] = cosLo;
+      if (cosLo < 0.0 && 0.0 < cosHi) cosCuts[nCos++] = 0.0;
+      if (cosLo < probe.x && probe.x < cosHi && probe.x != 0.0) {
+        cosCuts[nCos++] = probe.x;
+        for (const double pole : {-1.0, 1.0}) {
+          if (pole != (pole > 0 ? cosHi : cosLo)) continue;  // the cell does not reach this pole
+          const double toPole = std::abs(pole - probe.x);
+          for (double step = 4 * toPole; step < cosHi - cosLo && nCos < MaxCosCuts - 1; step *= 4)
+            cosCuts[nCos++] = pole > 0 ? pole - step : pole + step;
+        }
+      }
       cosCuts[nCos++] = cosHi;
+      std::sort(cosCuts, cosCuts + nCos);
       if (phiCuts[0] < probe.y && probe.y < phiHi) phiCuts[nPhi++] = probe.y;
       phiCuts[nPhi++] = phiHi;
       V sum = V(0.0);

@@ -9,12 +9,13 @@
 
 namespace scatterlab {
 
-// The integrand for bsdfCellIntegrals: x = pdf, yzw = f |cos wo| per channel.
+// The integrand for bsdfCellIntegrals: x = pdf, yzw = f |cos wo| per channel, in `mode`
+// (energyTransportMode(model) for the energy checks: bsdf_sampling.h says why).
 template <typename Model>
-auto bsdfEnergyIntegrand(const Model& model, const Vec3d& wi) {
-  return [&model, wi](const Vec3d& wo) {
-    const Rgb f = model.eval(wi, wo, TransportMode::Radiance) * std::abs(wo.z);
-    return glm::dvec4(model.pdf(wi, wo, TransportMode::Radiance), f.x, f.y, f.z);
+auto bsdfEnergyIntegrand(const Model& model, const Vec3d& wi, TransportMode mode = TransportMode::Radiance) {
+  return [&model, wi, mode](const Vec3d& wo) {
+    const Rgb f = model.eval(wi, wo, mode) * std::abs(wo.z);
+    return glm::dvec4(model.pdf(wi, wo, mode), f.x, f.y, f.z);
   };
 }
 

@@ -116,7 +116,7 @@ std::optional<std::string> negativeControlIsNoOp(NegativeControl control, const 
     case NegativeControl::SwappedDirections:
       return "not applicable: this pdf is symmetric in wi and wo, so the swap changes nothing";
     case NegativeControl::RoughnessMismatch:
-      return "not applicable: the altered sampler draws the same directions (alpha at its range limit?)";
+      return "not applicable: the altered sampler draws the same directions (roughness at its range limit?)";
     default:
       return "not applicable: the broken pdf equals the model's where the model samples";
   }
@@ -127,7 +127,7 @@ std::string toString(NegativeControl control) {
     case NegativeControl::PdfHighOnHalf: return "pdf +5% on half the sphere";
     case NegativeControl::MissingJacobian: return "missing half-vector Jacobian";
     case NegativeControl::SwappedDirections: return "wi/wo swapped in pdf";
-    case NegativeControl::RoughnessMismatch: return "sampler alpha 10% off";
+    case NegativeControl::RoughnessMismatch: return "sampler lobe width 10% off";
   }
   return "unknown";
 }

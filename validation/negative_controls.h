@@ -24,7 +24,7 @@ std::string toString(NegativeControl control);
 std::vector<NegativeControl> allNegativeControls();
 
 // Some controls change nothing for some models (the classic microfacet pdf is symmetric in
-// wi and wo; an alpha at its range limit cannot grow): then a rejection is impossible and
+// wi and wo; a roughness at its range limit cannot grow): then a rejection is impossible and
 // the control proves nothing. Returns the reason when `broken` is indistinguishable from
 // `model` at wi, nothing otherwise.
 std::optional<std::string> negativeControlIsNoOp(NegativeControl control, const BsdfModel& model,

@@ -32,8 +32,11 @@ class MaterialError : public std::runtime_error {
 };
 
 // number: a real; rgb: a number (all channels) or [r, g, b]; pair: a number (both) or
-// [x, y]; choice: one string out of a list.
-enum class ParameterKind { Number, Rgb, Pair, Choice };
+// [x, y]; choice: one string out of a list; path: a file path (in a material file, relative
+// to that file's directory: loadMaterialArgument resolves it); materials: an array of
+// materialCount material objects, each validated as a material of its own (a blend's
+// components; errors name the nested key, "materials[1].alpha").
+enum class ParameterKind { Number, Rgb, Pair, Choice, Path, Materials };
 std::string toString(ParameterKind kind);
 
 // The values a number (or every component of an rgb or pair) may take. Either end may be
@@ -64,13 +67,17 @@ struct ParameterSpec {
   // parameter (a conductor's "eta" and "k" instead of "metal") and absent unless given.
   nlohmann::json defaultValue{};
   std::string description{};
+  // No default and no alternative: a material without it is an error (a measured file).
+  bool required = false;
+  size_t materialCount = 0;  // Materials: how many nested materials
 
   // What the parameter accepts, in words: "a number or [alpha_x, alpha_y], each in [0.001, 1]".
   std::string allowed() const;
 };
 
 // A parameter's value after validation, in the form its kind describes.
-using ParameterValue = std::variant<double, Rgb, Vec2d, std::string>;
+// Materials: the nested materials, validated and completed (built by the build function).
+using ParameterValue = std::variant<double, Rgb, Vec2d, std::string, std::vector<nlohmann::json>>;
 
 // The validated parameters of one material, every default filled in. Build functions read
 // them by name; the spec guarantees that a parameter with a default is always present.
@@ -84,6 +91,8 @@ class MaterialParameters {
   Rgb rgb(std::string_view name) const;
   Vec2d pair(std::string_view name) const;
   const std::string& choice(std::string_view name) const;
+  const std::string& path(std::string_view name) const;
+  const std::vector<nlohmann::json>& materials(std::string_view name) const;
 
  private:
   template <typename T> const T& get(std::string_view name) const;
@@ -104,6 +113,12 @@ struct MaterialModel {
   // set's defaults apply.
   std::vector<std::vector<std::string>> alternatives{};
   BuildBsdfFunction build = nullptr;
+  // The parameter that sets the width of the model's main lobe ("alpha", "sigma", a Phong
+  // "exponent"), which withScaledRoughness scales for the roughness-mismatch negative
+  // control; empty for models without one. An exponent narrows the lobe as it grows:
+  // `widerWhenLarger` is false for it.
+  std::string lobeWidthParameter{};
+  bool widerWhenLarger = true;
 
   const ParameterSpec* findParameter(std::string_view name) const;
 };
@@ -123,17 +138,25 @@ std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material);
 // what is printed is exactly what was built.
 nlohmann::json completeMaterial(const nlohmann::json& material);
 
-// The material with its roughness ("alpha") multiplied by `factor` (> 0) and clamped to the
-// allowed range, every default filled in; nullopt for models without a roughness. The
+// The material made `factor` (> 0) times rougher: its lobe-width parameter (MaterialModel::
+// lobeWidthParameter) multiplied by `factor`, or divided by it for an exponent, and clamped to
+// the allowed range, every default filled in; nullopt for models without one. The
 // roughness-mismatch negative control samples from it.
 std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor);
+
+// The material for the roughness-mismatch negative control: `factor` (> 1) times rougher, or
+// as much smoother when the roughness is at its range limit (where scaling up would change
+// nothing and the control would prove nothing); nullopt for models without a lobe width.
+std::optional<nlohmann::json> withMismatchedRoughness(const nlohmann::json& material, double factor);
 
 // True when a material argument is inline JSON rather than a file path.
 bool isInlineMaterial(std::string_view argument);
 
 // Parses a material argument: inline JSON when it starts with '{', a file path otherwise.
 // Throws MaterialError naming the file (not found, not readable) or the source and position
-// of a parse error. The result is not validated; makeBsdf/completeMaterial do that.
+// of a parse error. The result is not validated; makeBsdf/completeMaterial do that. From a
+// file, relative values of path parameters (a measured material's "file"), at any depth, are
+// made relative to the file's directory, so a material file and its data can move together.
 nlohmann::json loadMaterialArgument(const std::string& argument);
 
 }  // namespace scatterlab

@@ -17,75 +17,14 @@
 
 #include <nlohmann/json.hpp>
 
-extern char** environ;
+#include "cli_runner.h"
 
 namespace scatterlab {
 namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-fs::path testOutputDir() {
-  const fs::path dir = fs::path(SCATTERLAB_TEST_OUTPUT_DIR) / "cli";
-  fs::create_directories(dir);
-  return dir;
-}
-
-// A path under the test output directory that no other test process uses (CTest may run
-// tests in parallel), and that does not exist yet.
-fs::path uniquePath(const std::string& stem) {
-  static std::atomic<int> counter{0};
-  const fs::path path = testOutputDir() / (stem + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-  fs::remove_all(path);
-  return path;
-}
-
-std::string readFile(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream contents;
-  contents << file.rdbuf();
-  return contents.str();
-}
-
-struct ProcessResult {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-// Runs the real executable with stdout and stderr redirected to files (files, not pipes: a
-// full pipe would block the child while the parent waits for it).
-ProcessResult runScatterlab(const std::vector<std::string>& args) {
-  const fs::path outPath = uniquePath("stdout"), errPath = uniquePath("stderr");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> argvStrings{SCATTERLAB_EXE};
-  argvStrings.insert(argvStrings.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& arg : argvStrings) argv.push_back(arg.data());
-  argv.push_back(nullptr);
-
-  ProcessResult run;
-  pid_t pid = 0;
-  const int spawnError = posix_spawn(&pid, SCATTERLAB_EXE, &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  EXPECT_EQ(spawnError, 0) << "cannot start " << SCATTERLAB_EXE;
-  if (spawnError != 0) return run;
-  int status = 0;
-  waitpid(pid, &status, 0);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  run.out = readFile(outPath);
-  run.err = readFile(errPath);
-  fs::remove(outPath);
-  fs::remove(errPath);
-  return run;
-}
-
-std::string describe(const ProcessResult& run) {
-  return "exit " + std::to_string(run.exitCode) + "\nstdout:\n" + run.out + "\nstderr:\n" + run.err;
-}
+using namespace cli_runner;
 
 // A check that takes well under a second: few samples, a coarse grid, two angles.
 const std::vector<std::string> QuickCheck{"--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"};
@@ -126,7 +65,8 @@ TEST(Cli, NoSubcommandIsBadInput) {
 TEST(Cli, ModelsListsEveryTypeWithRangesAndDefaults) {
   const ProcessResult run = runScatterlab({"models"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
-  for (const char* text : {"lambertian", "conductor", "albedo", "alpha", "[0.001, 1]", "\"ggx\"", "Walter"})
+  for (const char* text : {"lambertian", "conductor", "albedo", "alpha", "[0.001, 1]", "\"ggx\"", "Walter",
+                           "blend", "materials", "exactly 2 materials"})
     EXPECT_NE(run.out.find(text), std::string::npos) << text << " missing from:\n" << run.out;
 }
 
@@ -193,6 +133,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"second_material_bad",
                  {"check", R"({"type":"lambertian"})", R"({"type":"lambertian","albedo":2})"},
                  {"\"albedo\"", "2", "[0, 1]"}},
+        BadInput{"nested_material_bad",
+                 {"check", R"({"type":"blend","materials":[{"type":"lambertian"},{"type":"conductor","alpha":2}]})"},
+                 {"material key \"materials[1].alpha\"", "2", "[0.001, 1]"}},
         BadInput{"missing_file", {"check", "no-such-material.json"}, {"no-such-material.json", "not found"}},
         BadInput{"grid_without_x", {"check", "--grid", "64"}, {"--grid", "\"64\"", "COSxPHI"}},
         BadInput{"grid_too_small", {"check", "--grid", "1x128"}, {"--grid", "\"1x128\"", "[2, 4096]"}},

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "glossy_kit.h"
+#include "catalog_suite.h"
 #include "materials/bsdf/ashikhmin_shirley.h"
 #include "materials/bsdf/registry.h"
 
@@ -85,8 +85,8 @@ struct AsCase {
   double nu, nv, rs, rd;
 };
 std::string name(const AsCase& c) {
-  return std::string(c.ngan ? "Ngan" : "Paper") + "_" + glossy_kit::number(c.nu) + "x" + glossy_kit::number(c.nv) +
-         "_rs" + glossy_kit::number(c.rs);
+  return std::string(c.ngan ? "Ngan" : "Paper") + "_" + catalog_suite::number(c.nu) + "x" + catalog_suite::number(c.nv) +
+         "_rs" + catalog_suite::number(c.rs);
 }
 // Exponents from 0 (uniform half vectors) to 1e5; 800 x 1 is the anisotropy of alpha
 // 0.05 x 0.8 (n ~ 2 / alpha^2 - 2).
@@ -95,7 +95,8 @@ std::vector<AsCase> grid() {
           {false, 100000, 100000, 0.5, 0.5}, {false, 800, 1, 0.2, 0.8},  {true, 1, 1, 1.0, 0.0},
           {true, 78200, 78200, 0.999, 0.0}};
 }
-int suiteChiSquareTests() { return int(grid().size() * glossy_kit::incidentAngles().size()); }
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(grid().size() * catalog_suite::incidentAngles().size()));
 
 class AshikhminShirleyKit : public ::testing::TestWithParam<AsCase> {};
 
@@ -103,11 +104,27 @@ TEST_P(AshikhminShirleyKit, PassesEveryCheck) {
   const AsCase& c = GetParam();
   const auto model = c.ngan ? AshikhminShirleyBsdf::ngan(Rgb(1.0), c.rs, c.nu)
                             : AshikhminShirleyBsdf::paper(c.nu, c.nv, Rgb(c.rs), Rgb(c.rd));
-  glossy_kit::expectPasses(model, name(c), glossy_kit::options(suiteChiSquareTests(), "ashikhmin-shirley-kit"));
+  catalog_suite::expectPasses(model, name(c), catalog_suite::options("ashikhmin-shirley-kit"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, AshikhminShirleyKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<AsCase>& info) { return name(info.param); });
+
+
+// The kit must reject deliberately broken samplers of this model (VALIDATION.md section 1).
+struct ControlCase {
+  const char* name;
+  nlohmann::json material;
+  double wiTheta;
+};
+class AshikhminShirleyNegativeControls : public ::testing::TestWithParam<ControlCase> {};
+TEST_P(AshikhminShirleyNegativeControls, AreAllRejected) {
+  catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
+}
+INSTANTIATE_TEST_SUITE_P(Controls, AshikhminShirleyNegativeControls,
+                         ::testing::Values(ControlCase{"Anisotropic_wi0", {{"type", "ashikhmin-shirley"}, {"exponent", {200, 20}}, {"rs", 0.5}, {"rd", 0.3}}, 0.0},
+                                           ControlCase{"Ngan_wi60", {{"type", "ngan-ashikhmin-shirley"}, {"fresnelReflectance", 0.5}, {"sharpness", 300}}, 60.0}),
+                         [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace scatterlab

@@ -6,8 +6,7 @@
 
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/metals.h"
-#include "validation/bsdf_check.h"
-#include "validation/negative_controls.h"
+#include "catalog_suite.h"
 
 namespace scatterlab {
 namespace {
@@ -19,12 +18,7 @@ struct ConductorCase {
 };
 
 std::string name(const ConductorCase& c) {
-  auto alpha = [](double a) {
-    std::string s = std::to_string(a);
-    s.erase(s.find_last_not_of('0') + 1);
-    for (char& ch : s) ch = ch == '.' ? 'p' : ch;
-    return s;
-  };
+  const auto alpha = catalog_suite::number;
   return std::string(c.type == MicrofacetType::Ggx ? "Ggx" : "Beckmann") +
          (c.sampling == MicrofacetSampling::Visible ? "Visible" : "Classic") + "_" + alpha(c.alphaX) + "x" +
          alpha(c.alphaY);
@@ -44,18 +38,12 @@ const std::vector<double> IncidentAngles{0, 30, 60, 85, 89.9};
 const std::vector<double> OddGridAngles{0, 45, 80};
 constexpr int OddGridModels = 2;
 
-// Sidak over every chi-square test of a correct sampler in this suite (VALIDATION.md).
-int suiteChiSquareTests() { return int(grid().size() * IncidentAngles.size() + OddGridModels * OddGridAngles.size()); }
+[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(
+    int(grid().size() * IncidentAngles.size() + OddGridModels * OddGridAngles.size()));
 
 BsdfCheckOptions suiteOptions() {
-  BsdfCheckOptions o;
+  BsdfCheckOptions o = catalog_suite::options("conductor-kit");
   o.wiThetaDeg = IncidentAngles;
-  o.samples = 1'000'000;
-  o.thetaBins = 64;
-  o.phiBins = 128;
-  o.seed = 2024;
-  o.chiSquareTestCount = suiteChiSquareTests();
-  o.reciprocityPairs = 20000;
   return o;
 }
 
@@ -68,9 +56,7 @@ class ConductorKit : public ::testing::TestWithParam<ConductorCase> {};
 
 TEST_P(ConductorKit, PassesEveryCheck) {
   const auto model = makeGold(GetParam());
-  BsdfCheckOptions o = suiteOptions();
-  o.imageDir = std::filesystem::path(SCATTERLAB_TEST_OUTPUT_DIR) / "conductor-kit";
-  o.imagesOnFailureOnly = true;  // a failure leaves its observed/expected/residual maps here
+  const BsdfCheckOptions o = suiteOptions();  // a failure leaves its observed/expected/residual maps
   const CheckReport report = runBsdfChecks(*model, name(GetParam()), o);
   EXPECT_TRUE(report.passed()) << formatTable(report);
 }
@@ -117,7 +103,7 @@ TEST_P(ConductorNegativeControls, AreAllRejected) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Kit, ConductorNegativeControls,
+    Controls, ConductorNegativeControls,
     ::testing::Values(ControlCase{{MicrofacetType::Ggx, MicrofacetSampling::Visible, 0.3, 0.1}, 0.0},
                       ControlCase{{MicrofacetType::Ggx, MicrofacetSampling::Visible, 0.3, 0.1}, 60.0},
                       ControlCase{{MicrofacetType::Beckmann, MicrofacetSampling::Classic, 0.2, 0.2}, 30.0},

@@ -8,7 +8,7 @@
 
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
-#include "validation/quadrature.h"
+#include "materials/core/quadrature.h"
 
 namespace scatterlab {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "glossy_kit.h"
+#include "catalog_suite.h"
 #include "materials/bsdf/cook_torrance.h"
 #include "materials/bsdf/registry.h"
 
@@ -59,22 +59,39 @@ struct CookTorranceCase {
   double f0, roughness;
 };
 std::string name(const CookTorranceCase& c) {
-  return "F0_" + glossy_kit::number(c.f0) + "_m" + glossy_kit::number(c.roughness);
+  return "F0_" + catalog_suite::number(c.f0) + "_m" + catalog_suite::number(c.roughness);
 }
 std::vector<CookTorranceCase> grid() {
   return {{1.0, 0.001}, {0.05, 0.01}, {1.0, 0.1}, {0.5, 0.3}, {1.0, 1.0}};
 }
-int suiteChiSquareTests() { return int(grid().size() * glossy_kit::incidentAngles().size()); }
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(grid().size() * catalog_suite::incidentAngles().size()));
 
 class NganCookTorranceKit : public ::testing::TestWithParam<CookTorranceCase> {};
 
 TEST_P(NganCookTorranceKit, PassesEveryCheck) {
   const NganCookTorranceBsdf model(Rgb(KitAlbedo), GetParam().f0, GetParam().roughness);
-  glossy_kit::expectPasses(model, name(GetParam()), glossy_kit::options(suiteChiSquareTests(), "cook-torrance-kit"));
+  catalog_suite::expectPasses(model, name(GetParam()), catalog_suite::options("cook-torrance-kit"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, NganCookTorranceKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<CookTorranceCase>& info) { return name(info.param); });
+
+
+// The kit must reject deliberately broken samplers of this model (VALIDATION.md section 1).
+struct ControlCase {
+  const char* name;
+  nlohmann::json material;
+  double wiTheta;
+};
+class NganCookTorranceNegativeControls : public ::testing::TestWithParam<ControlCase> {};
+TEST_P(NganCookTorranceNegativeControls, AreAllRejected) {
+  catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
+}
+INSTANTIATE_TEST_SUITE_P(Controls, NganCookTorranceNegativeControls,
+                         ::testing::Values(ControlCase{"Rough_wi45", {{"type", "ngan-cook-torrance"}, {"albedo", 0.7}, {"eta", 0.5}, {"roughness", 0.3}}, 45.0},
+                                           ControlCase{"Sharp_wi80", {{"type", "ngan-cook-torrance"}, {"albedo", 0.7}, {"eta", 0.9}, {"roughness", 0.05}}, 80.0}),
+                         [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace scatterlab

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/bsdf/lafortune.h"
-#include "validation/bsdf_check.h"
+#include "catalog_suite.h"
 
 namespace scatterlab {
 namespace {
@@ -74,25 +74,29 @@ std::vector<LafortuneCase> grid() {
   };
 }
 
-// The kit at 1e6 samples costs about 2-3 s per (case, wi) on this machine; the test runs the
-// hard corners (the sharpest Ngan lobe at grazing incidence, two lobes) within CI's budget.
-void runLafortuneKit(const std::vector<std::pair<LafortuneCase, double>>& cases) {
-  BsdfCheckOptions o;
-  o.samples = 1'000'000;
-  o.thetaBins = 64;
-  o.phiBins = 128;
-  o.seed = 13;
-  o.chiSquareTestCount = int(cases.size());  // Sidak over this test's chi-square tests
-  for (const auto& [c, wi] : cases) {
-    o.wiThetaDeg = {wi};
-    const CheckReport report = runBsdfChecks(LafortuneBsdf(c.kd, c.lobes, c.normalization), "lafortune-" + c.name, o);
-    EXPECT_TRUE(report.passed()) << formatTable(report);
-  }
+const std::vector<double> KitAngles{0, 60, 89.9};
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(grid().size() * KitAngles.size()));
+
+class LafortuneKit : public ::testing::TestWithParam<LafortuneCase> {};
+
+TEST_P(LafortuneKit, PassesEveryCheck) {
+  const LafortuneCase& c = GetParam();
+  BsdfCheckOptions o = catalog_suite::options("lafortune-kit", 13);
+  o.wiThetaDeg = KitAngles;
+  catalog_suite::expectPasses(LafortuneBsdf(c.kd, c.lobes, c.normalization), "lafortune-" + c.name, o);
 }
 
-TEST(LafortuneKit, PassesAtHardCorners) {
-  const auto cases = grid();
-  runLafortuneKit({{cases[2], 89.9}, {cases[4], 45.0}});  // n = 10000 grazing; two lobes
+INSTANTIATE_TEST_SUITE_P(Grid, LafortuneKit, ::testing::ValuesIn(grid()),
+                         [](const ::testing::TestParamInfo<LafortuneCase>& info) {
+                           std::string n = info.param.name;
+                           for (char& ch : n) ch = ch == '-' ? '_' : ch;
+                           return n;
+                         });
+
+TEST(LafortuneControls, AreAllRejected) {
+  catalog_suite::expectControlsRejected(
+      {{"type", "lafortune"}, {"kd", 0.2}, {"ks", 0.5}, {"cx", -0.8}, {"cy", -0.8}, {"cz", 0.9}, {"exponent", 30}}, 50.0);
 }
 
 }  // namespace

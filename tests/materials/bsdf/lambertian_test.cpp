@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/bsdf/lambertian.h"
-#include "validation/bsdf_check.h"
+#include "catalog_suite.h"
 
 namespace scatterlab {
 namespace {
@@ -38,11 +38,11 @@ TEST(Lambertian, LosslessOnlyWhenWhite) {
   EXPECT_FALSE(LambertianBsdf(Rgb(1.0, 1.0, 0.99)).isLossless());
 }
 
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(catalog_suite::incidentAngles().size()));
+
 TEST(Lambertian, PassesTheKitFromNormalToGrazing) {
-  BsdfCheckOptions o;
-  o.wiThetaDeg = {0, 30, 60, 85, 89.9};
-  const CheckReport report = runBsdfChecks(LambertianBsdf(Rgb(1.0)), "lambertian-white", o);
-  EXPECT_TRUE(report.passed()) << formatTable(report);
+  catalog_suite::expectPasses(LambertianBsdf(Rgb(1.0)), "lambertian-white", catalog_suite::options("lambertian-kit"));
 }
 
 TEST(Lambertian, TwoSidedWrapperFlipsBackfacingDirections) {

@@ -5,7 +5,7 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
-#include "validation/quadrature.h"
+#include "materials/core/quadrature.h"
 
 namespace scatterlab {
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/bsdf/oren_nayar.h"
-#include "validation/bsdf_check.h"
+#include "catalog_suite.h"
 
 namespace scatterlab {
 namespace {
@@ -34,23 +34,31 @@ TEST(OrenNayar, EqualsTheAngleFormAndIsReciprocal) {
   EXPECT_FALSE(OrenNayarBsdf(Rgb(0.7), 0.3).sample(Vec3d(0, 0, -1), 0.5, {0.5, 0.5}));
 }
 
-// The kit at 1e6 samples costs about 1-2 s per (sigma, wi) on this machine; the test runs the
-// hard corners (roughest at normal and grazing incidence, smooth at grazing) within CI's budget.
-void runOrenNayarKit(const std::vector<std::pair<double, double>>& sigmaAndWi) {
-  BsdfCheckOptions o;
-  o.samples = 1'000'000;
-  o.thetaBins = 64;
-  o.phiBins = 128;
-  o.seed = 7;
-  o.chiSquareTestCount = int(sigmaAndWi.size());  // Sidak over this test's chi-square tests
-  for (auto [sigma, wi] : sigmaAndWi) {
-    o.wiThetaDeg = {wi};
-    const CheckReport report = runBsdfChecks(OrenNayarBsdf(Rgb(1.0), sigma), "oren-nayar-" + std::to_string(sigma), o);
-    EXPECT_TRUE(report.passed()) << formatTable(report);
-  }
+// ---- The kit: from smooth (sigma 0, Lambertian) to the roughest sigma = pi/2, at normal,
+// oblique and grazing incidence.
+const std::vector<double> KitSigmas{0.0, 0.35, PiOver2};
+const std::vector<double> KitAngles{0, 60, 89.9};
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(KitSigmas.size() * KitAngles.size()));
+
+class OrenNayarKit : public ::testing::TestWithParam<double> {};
+
+TEST_P(OrenNayarKit, PassesEveryCheck) {
+  BsdfCheckOptions o = catalog_suite::options("oren-nayar-kit", 7);
+  o.wiThetaDeg = KitAngles;
+  catalog_suite::expectPasses(OrenNayarBsdf(Rgb(1.0), GetParam()), "oren-nayar-" + std::to_string(GetParam()), o);
 }
 
-TEST(OrenNayarKit, PassesAtCorners) { runOrenNayarKit({{PiOver2, 89.9}, {PiOver2, 0.0}, {0.35, 45.0}, {0.0, 80.0}}); }
+INSTANTIATE_TEST_SUITE_P(Grid, OrenNayarKit, ::testing::ValuesIn(KitSigmas),
+                         [](const ::testing::TestParamInfo<double>& info) {
+                           return "sigma" + catalog_suite::number(info.param);
+                         });
+
+// Cosine sampling does not depend on sigma, so the lobe-width control is a no-op here and
+// the kit must say so; the +5% control must be rejected.
+TEST(OrenNayarControls, AreAllRejected) {
+  catalog_suite::expectControlsRejected({{"type", "oren-nayar"}, {"sigma", 0.5}}, 40.0);
+}
 
 }  // namespace
 }  // namespace scatterlab

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/bsdf/phong.h"
-#include "validation/bsdf_check.h"
+#include "catalog_suite.h"
 
 namespace scatterlab {
 namespace {
@@ -58,37 +58,45 @@ TEST(PhongFamily, SampleAgreesWithEvalAndPdfAndFailsBelow) {
   }
 }
 
+// ---- The kit ----
+
+// kd + ks <= 1 keeps Phong's albedo <= 1, kd + 4 ks <= 1 Blinn-Phong's. The corners: the
+// sharpest lobes (n = 1e4 and Ngan's 1e5) and n = 0 (a uniform lobe), all-specular, and a
+// typical material; every case at normal, oblique and grazing incidence.
 struct PhongCase {
-  double kd, ks, n, wiTheta;
+  bool blinn;
+  double kd, ks, n;
 };
+std::string name(const PhongCase& c) {
+  return std::string(c.blinn ? "BlinnPhong" : "Phong") + "_kd" + catalog_suite::number(c.kd) + "_ks" +
+         catalog_suite::number(c.ks) + "_n" + catalog_suite::number(c.n);
+}
+std::vector<PhongCase> grid() {
+  return {{false, 0.2, 0.8, 10000.0}, {false, 0.5, 0.5, 0.0}, {false, 0.0, 1.0, 1.0}, {false, 0.3, 0.6, 50.0},
+          {true, 0.1, 0.2, 100000.0}, {true, 0.0, 0.2, 10.0}, {true, 0.5, 0.1, 100.0}};
+}
+const std::vector<double> KitAngles{0, 60, 89.9};
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(grid().size() * KitAngles.size()));
 
-// The kit at 1e6 samples costs about 2 s per (parameters, wi) on this machine; each test runs
-// the hard corners (sharpest lobe at grazing incidence, n = 0, all-specular) within CI's budget.
-// kd + ks <= 1 keeps Phong's albedo <= 1, kd + 4 ks <= 1 Blinn-Phong's.
-const std::vector<PhongCase> PhongCorners{{0.2, 0.8, 10000.0, 89.9}, {0.5, 0.5, 0.0, 0.0}, {0.0, 1.0, 1.0, 45.0}};
-const std::vector<PhongCase> BlinnCorners{{0.1, 0.2, 100000.0, 89.9}, {0.0, 0.2, 10.0, 45.0}};
+class PhongKit : public ::testing::TestWithParam<PhongCase> {};
 
-template <typename Model> void runPhongKit(const std::string& name, const std::vector<PhongCase>& cases, int chiSquareTests) {
-  BsdfCheckOptions o;
-  o.samples = 1'000'000;
-  o.thetaBins = 64;
-  o.phiBins = 128;
-  o.seed = 11;
-  o.chiSquareTestCount = chiSquareTests;
-  for (const PhongCase& c : cases) {
-    o.wiThetaDeg = {c.wiTheta};
-    const std::string label = name + " kd=" + std::to_string(c.kd) + " ks=" + std::to_string(c.ks) + " n=" + std::to_string(c.n);
-    const CheckReport report = runBsdfChecks(Model(Rgb(c.kd), Rgb(c.ks), c.n), label, o);
-    EXPECT_TRUE(report.passed()) << formatTable(report);
-  }
+TEST_P(PhongKit, PassesEveryCheck) {
+  const PhongCase& c = GetParam();
+  BsdfCheckOptions o = catalog_suite::options("phong-kit", 11);
+  o.wiThetaDeg = KitAngles;
+  if (c.blinn) catalog_suite::expectPasses(BlinnPhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
+  else catalog_suite::expectPasses(PhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
 }
 
-// Sidak over every chi-square test of this file.
-const int DefaultChiSquareTests = int(PhongCorners.size() + BlinnCorners.size());
+INSTANTIATE_TEST_SUITE_P(Grid, PhongKit, ::testing::ValuesIn(grid()),
+                         [](const ::testing::TestParamInfo<PhongCase>& info) { return name(info.param); });
 
-TEST(PhongKit, PassesAtHardCorners) { runPhongKit<PhongBsdf>("phong", PhongCorners, DefaultChiSquareTests); }
-TEST(BlinnPhongKit, PassesAtHardCorners) {
-  runPhongKit<BlinnPhongBsdf>("blinn-phong", BlinnCorners, DefaultChiSquareTests);
+TEST(PhongControls, AreAllRejected) {
+  catalog_suite::expectControlsRejected({{"type", "phong"}, {"kd", 0.3}, {"ks", 0.6}, {"exponent", 40}}, 30.0);
+}
+TEST(BlinnPhongControls, AreAllRejected) {
+  catalog_suite::expectControlsRejected({{"type", "blinn-phong"}, {"kd", 0.2}, {"ks", 0.2}, {"exponent", 200}}, 70.0);
 }
 
 }  // namespace

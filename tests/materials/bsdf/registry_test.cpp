@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -51,12 +52,30 @@ Rgb albedoOf(const json& material) {
 
 // ---- Defaults -------------------------------------------------------------------------
 
+// Models with a required parameter (a measured file) cannot be built from their type alone.
+bool hasRequiredParameter(const MaterialModel& model) {
+  return std::any_of(model.parameters.begin(), model.parameters.end(),
+                     [](const ParameterSpec& spec) { return spec.required; });
+}
+
 TEST(MaterialRegistry, EveryModelBuildsFromItsTypeAlone) {
   const Vec3d wi = directionFromDegrees(40, 10), wo = directionFromDegrees(35, 200);
   for (const MaterialModel& model : materialModels()) {
     SCOPED_TRACE(model.type);
+    if (hasRequiredParameter(model)) {
+      EXPECT_THROW(makeBsdf(json{{"type", model.type}}), MaterialError);
+      continue;
+    }
     const auto bsdf = makeBsdf(json{{"type", model.type}});
     ASSERT_NE(bsdf, nullptr);
+    // Delta lobes only (a mirror, smooth glass): eval and pdf are 0 for every pair (bsdf.h),
+    // so the model must produce a sample instead.
+    if (!hasAny(bsdf->flags(), LobeFlags::Diffuse | LobeFlags::Glossy)) {
+      const auto s = bsdf->sample(wi, 0.5, {0.5, 0.5});
+      ASSERT_TRUE(s.has_value());
+      EXPECT_TRUE(s->isDelta() && s->pdf > 0 && std::isfinite(s->weight.x));
+      continue;
+    }
     const Rgb f = bsdf->eval(wi, wo);
     for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(f[c]) && f[c] > 0) << "channel " << c << ": " << f[c];
     EXPECT_GT(bsdf->pdf(wi, wo), 0.0);
@@ -66,18 +85,25 @@ TEST(MaterialRegistry, EveryModelBuildsFromItsTypeAlone) {
 TEST(MaterialRegistry, CompleteMaterialFillsEveryDefault) {
   for (const MaterialModel& model : materialModels()) {
     SCOPED_TRACE(model.type);
+    if (hasRequiredParameter(model)) continue;
     const json completed = completeMaterial(json{{"type", model.type}});
     EXPECT_EQ(completed["type"], model.type);
     for (const ParameterSpec& spec : model.parameters) {
       if (spec.defaultValue.is_null()) {
         EXPECT_FALSE(completed.contains(spec.name)) << spec.name;
+      } else if (spec.kind == ParameterKind::Materials) {
+        // Nested materials are completed as well.
+        json expected = json::array();
+        for (const json& nested : spec.defaultValue) expected.push_back(completeMaterial(nested));
+        EXPECT_EQ(completed.value(spec.name, json()), expected) << spec.name;
       } else {
         EXPECT_EQ(completed.value(spec.name, json()), spec.defaultValue) << spec.name;
       }
     }
   }
   const json conductorDefaults{
-      {"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.1}, {"metal", "Au"}, {"sampling", "visible"}};
+      {"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.1},
+      {"metal", "Au"}, {"sampling", "visible"}, {"multiscatter", "none"}};
   EXPECT_EQ(completeMaterial(json{{"type", "conductor"}}), conductorDefaults);
   EXPECT_EQ(completeMaterial(json{{"type", "lambertian"}}), (json{{"type", "lambertian"}, {"albedo", 0.8}}));
 }
@@ -237,6 +263,33 @@ TEST(MaterialRegistry, WithScaledRoughnessClampsToTheAllowedRange) {
 TEST(MaterialRegistry, WithScaledRoughnessIsEmptyForModelsWithoutRoughness) {
   EXPECT_FALSE(withScaledRoughness(json{{"type", "lambertian"}}, 1.1).has_value());
   EXPECT_THROW(withScaledRoughness(json{{"type", "conductor"}, {"alpha", -1}}, 1.1), MaterialError);
+}
+
+// An exponent narrows its lobe as it grows: "10% rougher" divides it.
+TEST(MaterialRegistry, WithScaledRoughnessDividesAnExponent) {
+  const auto rougher = withScaledRoughness(json{{"type", "phong"}, {"exponent", 110.0}}, 1.1);
+  ASSERT_TRUE(rougher.has_value());
+  EXPECT_DOUBLE_EQ((*rougher)["exponent"].get<double>(), 100.0);
+}
+
+TEST(MaterialRegistry, EveryDeclaredLobeWidthIsANumberOrPairParameter) {
+  for (const MaterialModel& model : materialModels()) {
+    if (model.lobeWidthParameter.empty()) continue;
+    SCOPED_TRACE(model.type);
+    const ParameterSpec* spec = model.findParameter(model.lobeWidthParameter);
+    ASSERT_NE(spec, nullptr);
+    EXPECT_TRUE(spec->kind == ParameterKind::Number || spec->kind == ParameterKind::Pair);
+  }
+}
+
+// At the range limit, scaling up changes nothing; the mismatch then scales down instead.
+TEST(MaterialRegistry, MismatchedRoughnessTurnsBackAtTheRangeLimit) {
+  const auto atLimit = withMismatchedRoughness(json{{"type", "conductor"}, {"alpha", 1.0}}, 1.1);
+  ASSERT_TRUE(atLimit.has_value());
+  EXPECT_DOUBLE_EQ((*atLimit)["alpha"].get<double>(), 1.0 / 1.1);
+  const auto inside = withMismatchedRoughness(json{{"type", "conductor"}, {"alpha", 0.5}}, 1.1);
+  EXPECT_DOUBLE_EQ((*inside)["alpha"].get<double>(), 0.55);
+  EXPECT_FALSE(withMismatchedRoughness(json{{"type", "lambertian"}}, 1.1).has_value());
 }
 
 // ---- Material arguments -----------------------------------------------------------------

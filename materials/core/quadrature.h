@@ -1,4 +1,5 @@
-// Adaptive quadrature for the test kit: expected chi-square counts, pdf normalisation and
+// Adaptive quadrature, shared by models that need an integral of their own (diffuse Fresnel
+// reflectance, energy tables) and by the test kit: expected chi-square counts, pdf normalisation and
 // directional albedo are integrals of model functions over cells of the sphere.
 //
 // Nested adaptive Simpson (Lyness 1969 error estimate, Richardson-corrected), the scheme

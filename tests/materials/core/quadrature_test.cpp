@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/core/math.h"
-#include "validation/quadrature.h"
+#include "materials/core/quadrature.h"
 
 namespace scatterlab {
 namespace {

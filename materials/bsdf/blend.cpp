@@ -1,0 +1,76 @@
+#include "materials/bsdf/blend.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace scatterlab {
+
+namespace {
+
+// The largest double below 1: a remapped uLobe stays in [0, 1) despite rounding.
+constexpr double OneMinusEpsilon = 0x1.fffffffffffffp-1;
+
+bool isTransmissive(const BsdfModel& model) { return hasAny(model.flags(), LobeFlags::Transmission); }
+
+}  // namespace
+
+BlendBsdf::BlendBsdf(std::unique_ptr<BsdfModel> first, std::unique_ptr<BsdfModel> second, const Rgb& weight)
+    : first_(std::move(first)), second_(std::move(second)), weight_(weight),
+      firstProbability_((weight.x + weight.y + weight.z) / 3.0) {
+  if (!first_ || !second_) throw std::invalid_argument("blend: both models are needed");
+  for (int c = 0; c < 3; ++c)
+    if (!(weight[c] >= 0.0 && weight[c] <= 1.0))
+      throw std::invalid_argument("blend: the weight must be in [0, 1] in every channel, got " +
+                                  std::to_string(weight[c]));
+  if (hasAny(first_->flags(), LobeFlags::Specular) && hasAny(second_->flags(), LobeFlags::Specular))
+    throw std::invalid_argument(
+        "blend: both models have delta (specular) lobes; a direction both sample discretely would need the "
+        "probabilities of both, so at most one of the two may have delta lobes");
+  const bool firstTransmits = isTransmissive(*first_), secondTransmits = isTransmissive(*second_);
+  if (firstTransmits && secondTransmits && first_->interiorIndex() != second_->interiorIndex())
+    throw std::invalid_argument("blend: the two models transmit into different media (interior indices " +
+                                std::to_string(first_->interiorIndex()) + " and " +
+                                std::to_string(second_->interiorIndex()) + "); there is one medium below a surface");
+  interiorIndex_ = firstTransmits ? first_->interiorIndex() : (secondTransmits ? second_->interiorIndex() : 1.0);
+}
+
+bool BlendBsdf::isLossless() const {
+  return first_->isLossless() && second_->isLossless() && isTransmissive(*first_) == isTransmissive(*second_);
+}
+
+Rgb BlendBsdf::eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const {
+  Rgb f(0.0);
+  // A component of weight 0 in every channel is not evaluated: its value could not show.
+  if (weight_ != Rgb(0.0)) f += weight_ * first_->eval(wi, wo, mode);
+  if (weight_ != Rgb(1.0)) f += (Rgb(1.0) - weight_) * second_->eval(wi, wo, mode);
+  return f;
+}
+
+double BlendBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const {
+  double density = 0.0;
+  if (firstProbability_ > 0.0) density += firstProbability_ * first_->pdf(wi, wo, mode);
+  if (firstProbability_ < 1.0) density += (1.0 - firstProbability_) * second_->pdf(wi, wo, mode);
+  return density;
+}
+
+std::optional<BsdfSample> BlendBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode mode) const {
+  const bool chooseFirst = uLobe < firstProbability_;
+  const double probability = chooseFirst ? firstProbability_ : 1.0 - firstProbability_;
+  const double remapped =
+      std::min(chooseFirst ? uLobe / firstProbability_ : (uLobe - firstProbability_) / probability, OneMinusEpsilon);
+  std::optional<BsdfSample> s = (chooseFirst ? first_ : second_)->sample(wi, remapped, u, mode);
+  if (!s) return s;
+  if (s->isDelta()) {
+    // Coefficient w c over discrete probability wbar P: the component's weight times w / wbar.
+    s->weight *= (chooseFirst ? weight_ : Rgb(1.0) - weight_) / probability;
+    s->pdf *= probability;
+    return s;
+  }
+  // The mixture's density and value at wo, exactly as pdf() and eval() compute them.
+  s->pdf = pdf(wi, s->wo, mode);
+  if (!(s->pdf > 0.0)) return std::nullopt;
+  s->weight = eval(wi, s->wo, mode) * (std::abs(s->wo.z) / s->pdf);
+  return s;
+}
+
+}  // namespace scatterlab

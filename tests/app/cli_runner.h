@@ -1,0 +1,87 @@
+// Running the real `scatterlab` executable from the CLI tests: exit code, stdout and stderr
+// of one run, and scratch paths that parallel test processes do not share.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace scatterlab::cli_runner {
+
+namespace fs = std::filesystem;
+
+inline fs::path testOutputDir() {
+  const fs::path dir = fs::path(SCATTERLAB_TEST_OUTPUT_DIR) / "cli";
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A path under the test output directory that no other test process uses (CTest may run
+// tests in parallel), and that does not exist yet.
+inline fs::path uniquePath(const std::string& stem) {
+  static std::atomic<int> counter{0};
+  const fs::path path = testOutputDir() / (stem + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+  fs::remove_all(path);
+  return path;
+}
+
+inline std::string readFile(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream contents;
+  contents << file.rdbuf();
+  return contents.str();
+}
+
+struct ProcessResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs the real executable with stdout and stderr redirected to files (files, not pipes: a
+// full pipe would block the child while the parent waits for it).
+inline ProcessResult runScatterlab(const std::vector<std::string>& args) {
+  const fs::path outPath = uniquePath("stdout"), errPath = uniquePath("stderr");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> argvStrings{SCATTERLAB_EXE};
+  argvStrings.insert(argvStrings.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& arg : argvStrings) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+
+  ProcessResult run;
+  pid_t pid = 0;
+  const int spawnError = posix_spawn(&pid, SCATTERLAB_EXE, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  EXPECT_EQ(spawnError, 0) << "cannot start " << SCATTERLAB_EXE;
+  if (spawnError != 0) return run;
+  int status = 0;
+  waitpid(pid, &status, 0);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  run.out = readFile(outPath);
+  run.err = readFile(errPath);
+  fs::remove(outPath);
+  fs::remove(errPath);
+  return run;
+}
+
+inline std::string describe(const ProcessResult& run) {
+  return "exit " + std::to_string(run.exitCode) + "\nstdout:\n" + run.out + "\nstderr:\n" + run.err;
+}
+
+}  // namespace scatterlab::cli_runner
