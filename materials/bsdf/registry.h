@@ -101,10 +101,20 @@ class MaterialParameters {
 };
 
 using BuildBsdfFunction = std::unique_ptr<BsdfModel> (*)(const MaterialParameters&);
+// Fills defaults that depend on other parameters (a subsurface medium's index of refraction)
+// into the parameters and the completed description, and rejects combinations the spec alone
+// cannot (throws MaterialError). Runs after every parameter has been validated.
+using CompleteDependentFunction = void (*)(MaterialParameters&, nlohmann::json& completed);
+
+// What a model builds: a BSDF (makeBsdf), or a subsurface material, a BSSRDF
+// (materials/bssrdf/subsurface_registry.h, makeSubsurface). Both share the parameter specs
+// and their validation.
+enum class MaterialKind { Bsdf, Subsurface };
 
 // One registry entry.
 struct MaterialModel {
   std::string type{};
+  MaterialKind kind = MaterialKind::Bsdf;
   std::string description{};  // one line
   std::string citation{};
   std::vector<ParameterSpec> parameters{};
@@ -112,7 +122,8 @@ struct MaterialModel {
   // with "k"). A material gives at most one set, and all of it; with none given, the first
   // set's defaults apply.
   std::vector<std::vector<std::string>> alternatives{};
-  BuildBsdfFunction build = nullptr;
+  BuildBsdfFunction build = nullptr;  // Bsdf models
+  CompleteDependentFunction completeDependent = nullptr;
   // The parameter that sets the width of the model's main lobe ("alpha", "sigma", a Phong
   // "exponent"), which withScaledRoughness scales for the roughness-mismatch negative
   // control; empty for models without one. An exponent narrows the lobe as it grows:
@@ -131,7 +142,23 @@ const MaterialModel* findMaterialModel(std::string_view type);
 // min, max, min_open, max_open, choices, default, description}], alternatives}].
 nlohmann::json materialCatalogJson();
 
-// Builds the model a material describes; throws MaterialError on any invalid description.
+// A material description validated against its model's spec: the model, the parameters with
+// every default filled in, and the completed description.
+struct ValidatedMaterial {
+  const MaterialModel* model = nullptr;
+  MaterialParameters parameters;
+  nlohmann::json completed;  // the material as given, plus every default that applies
+};
+// Throws MaterialError on any invalid description (any kind of model).
+ValidatedMaterial validateMaterial(const nlohmann::json& material);
+
+// Throws the MaterialError every check of a key throws: "material key "KEY": VALUE PROBLEM;
+// allowed: ALLOWED" (for builders that check what the spec alone cannot).
+[[noreturn]] void throwMaterialKeyError(std::string_view key, const nlohmann::json& value, std::string_view problem,
+                                        std::string_view allowed);
+
+// Builds the BSDF a material describes; throws MaterialError on any invalid description, and
+// for a material that is not a BSDF (a subsurface material).
 std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material);
 
 // The same material with every default filled in (validated; throws MaterialError), so that
