@@ -46,7 +46,7 @@ template <typename T> T betterDipoleProfile(const BetterDipole<T>& d, const T& r
 
 template <typename T> T betterDipoleCumulative(const BetterDipole<T>& d, const T& r) {
   const T flux = pointSourceFluxIntegral(d.zr, d.sigmaTr, r) - pointSourceFluxIntegral(d.zv, d.sigmaTr, r);
-  const T fluence = pointSourceFluenceIntegral(d.zr, d.sigmaTr, r) - pointSourceFluenceIntegral(d.zv, d.sigmaTr, r);
+  const T fluence = dipoleFluenceIntegral(d.zr, d.zv, d.sigmaTr, r);
   return d.alphaPrime * d.alphaPrime * T(1 / (4 * Pi)) * (T(d.cE) * flux + (T(d.cPhi) / d.D) * fluence);
 }
 

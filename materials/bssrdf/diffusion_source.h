@@ -60,4 +60,19 @@ template <typename T> T pointSourceFluenceIntegral(const T& z, const T& sigma, c
   return T(2 * Pi) * exp(-sigma * depth) * oneMinusExpOver(sigma, r * r / (d + depth));
 }
 
+// integral_0^r 2 pi r' (pointSourceFluence(zr) - pointSourceFluence(zv)) dr' for a dipole with
+// |zv| > zr > 0: 2 pi [e^(-sigma zr) L(|zv| - zr) - e^(-sigma d_r) L(d_v - d_r)], L(x) =
+// oneMinusExpOver(sigma, x), d_v - d_r = (zv^2 - zr^2) / (d_r + d_v). The difference of the two
+// single-source integrals would cancel catastrophically at large r when sigma -> 0 (each grows
+// like r, their difference tends to |zv| - zr); this form has no such cancellation.
+template <typename T> T dipoleFluenceIntegral(const T& zr, const T& zv, const T& sigma, const T& r) {
+  using std::abs;
+  using std::exp;
+  using std::sqrt;
+  const T depthV = abs(zv);
+  const T dr = sqrt(r * r + zr * zr), dv = sqrt(r * r + zv * zv);
+  return T(2 * Pi) * (exp(-sigma * zr) * oneMinusExpOver(sigma, depthV - zr) -
+                      exp(-sigma * dr) * oneMinusExpOver(sigma, (zv * zv - zr * zr) / (dr + dv)));
+}
+
 }  // namespace scatterlab

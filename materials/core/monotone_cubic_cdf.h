@@ -58,7 +58,8 @@ class MonotoneCubicCdf {
   double density(double x) const {
     if (x < x_.front() || x > x_.back()) return 0.0;
     const size_t k = interval(x);
-    return pieceSlope(k, (x - x_[k]) / width(k)) / width(k);
+    // >= 0 in exact arithmetic (the limited slopes); round-off can leave -1e-20 on a flat piece.
+    return std::max(pieceSlope(k, (x - x_[k]) / width(k)) / width(k), 0.0);
   }
 
   // The x with F(x) = target, for target in [F_0, F_n] (clamped): Newton-bisection inside the
