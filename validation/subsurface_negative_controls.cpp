@@ -6,9 +6,9 @@ namespace scatterlab {
 
 std::string toString(SubsurfaceControl control) {
   switch (control) {
-    case SubsurfaceControl::RadiusPdfHighOnHalf: return "radius pdf +5% below the median";
-    case SubsurfaceControl::WrongChannelWeights: return "probe pdf with channel weights 30% off";
-    case SubsurfaceControl::RadialShortcut: return "probe pdf by the radial shortcut";
+    case SubsurfaceControl::RadiusPdfHighOnHalf: return "radius pdf +5% on half";
+    case SubsurfaceControl::WrongChannelWeights: return "wrong channel weights";
+    case SubsurfaceControl::RadialShortcut: return "radial shortcut pdf";
   }
   return "unknown";
 }

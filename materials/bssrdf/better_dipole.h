@@ -40,7 +40,7 @@ BetterDipole<T> makeBetterDipole(const T& sigmaSPrime, const T& sigmaA, const Fr
 
 template <typename T> T betterDipoleProfile(const BetterDipole<T>& d, const T& r) {
   const T flux = pointSourceFlux(d.zr, d.sigmaTr, r) - pointSourceFlux(d.zv, d.sigmaTr, r);
-  const T fluence = pointSourceFluence(d.zr, d.sigmaTr, r) - pointSourceFluence(d.zv, d.sigmaTr, r);
+  const T fluence = dipoleFluence(d.zr, d.zv, d.sigmaTr, r);
   return d.alphaPrime * d.alphaPrime * T(1 / (4 * Pi)) * (T(d.cE) * flux + (T(d.cPhi) / d.D) * fluence);
 }
 

@@ -5,9 +5,11 @@
 //   flux     z (1 + sigma d) e^(-sigma d) / d^3     integral 2 pi sign(z) (e^(-sigma|z|) - |z| e^(-sigma d) / d)
 //   fluence  e^(-sigma d) / d                        integral 2 pi (e^(-sigma|z|) - e^(-sigma d)) / sigma
 // (with 2 pi r dr = 2 pi d dd, both integrate in closed form). The dipoles and photon beam
-// diffusion are sums of these. The integrals are written without the cancellation of their
-// naive forms at small r (d - |z| = r^2 / (d + |z|), expm1), so a radius CDF keeps its
-// relative precision near 0, and they stay finite at sigma = 0 (no absorption).
+// diffusion are sums of these; the fluence appears only as a dipole's difference of a real and
+// a virtual source, which is written as one term. Everything is written without the
+// cancellation of the naive forms (d - |z| = r^2 / (d + |z|), d_v - d_r = (z_v^2 - z_r^2) /
+// (d_r + d_v), expm1): the flux integral keeps its relative precision near r = 0, the dipole
+// fluence its digits in the far tail, and all stay finite at sigma = 0 (no absorption).
 // Templated on T for ceres::Jet; z must not be 0.
 #pragma once
 
@@ -30,14 +32,8 @@ template <typename T> T pointSourceFlux(const T& z, const T& sigma, const T& r) 
   return z * (T(1) + sigma * d) * exp(-sigma * d) / (d * d * d);
 }
 
-template <typename T> T pointSourceFluence(const T& z, const T& sigma, const T& r) {
-  using std::exp;
-  using std::sqrt;
-  const T d = sqrt(r * r + z * z);
-  return exp(-sigma * d) / d;
-}
-
-// integral_0^r 2 pi r' pointSourceFlux dr' = 2 pi sign(z) e^(-sigma|z|) [(d - |z|)/d - (|z|/d) expm1(-sigma (d - |z|))].
+// integral_0^r 2 pi r' pointSourceFlux dr'
+//   = 2 pi sign(z) e^(-sigma|z|) [(d - |z|) / d - (|z| / d) expm1(-sigma (d - |z|))].
 template <typename T> T pointSourceFluxIntegral(const T& z, const T& sigma, const T& r) {
   using std::abs;
   using std::exp;
@@ -50,18 +46,20 @@ template <typename T> T pointSourceFluxIntegral(const T& z, const T& sigma, cons
   return z > T(0) ? value : -value;
 }
 
-// integral_0^r 2 pi r' pointSourceFluence dr' = 2 pi e^(-sigma|z|) (1 - e^(-sigma (d - |z|))) / sigma.
-template <typename T> T pointSourceFluenceIntegral(const T& z, const T& sigma, const T& r) {
-  using std::abs;
+// e^(-sigma d_r) / d_r - e^(-sigma d_v) / d_v, the fluence of a dipole with |zv| > zr > 0, as
+// e^(-sigma d_r) [D / (d_r d_v) - expm1(-sigma D) / d_v], D = d_v - d_r = (zv^2 - zr^2) /
+// (d_r + d_v): two positive terms, where the plain difference of 1/d-sized numbers loses every
+// digit at large r (and makes an adaptive quadrature of the profile refine on noise).
+template <typename T> T dipoleFluence(const T& zr, const T& zv, const T& sigma, const T& r) {
   using std::exp;
+  using std::expm1;
   using std::sqrt;
-  const T depth = abs(z);
-  const T d = sqrt(r * r + z * z);
-  return T(2 * Pi) * exp(-sigma * depth) * oneMinusExpOver(sigma, r * r / (d + depth));
+  const T dr = sqrt(r * r + zr * zr), dv = sqrt(r * r + zv * zv);
+  const T apart = (zv * zv - zr * zr) / (dr + dv);
+  return exp(-sigma * dr) * (apart / (dr * dv) - expm1(-sigma * apart) / dv);
 }
 
-// integral_0^r 2 pi r' (pointSourceFluence(zr) - pointSourceFluence(zv)) dr' for a dipole with
-// |zv| > zr > 0: 2 pi [e^(-sigma zr) L(|zv| - zr) - e^(-sigma d_r) L(d_v - d_r)], L(x) =
+// integral_0^r 2 pi r' dipoleFluence dr' for a dipole with |zv| > zr > 0: 2 pi [e^(-sigma zr) L(|zv| - zr) - e^(-sigma d_r) L(d_v - d_r)], L(x) =
 // oneMinusExpOver(sigma, x), d_v - d_r = (zv^2 - zr^2) / (d_r + d_v). The difference of the two
 // single-source integrals would cancel catastrophically at large r when sigma -> 0 (each grows
 // like r, their difference tends to |zv| - zr); this form has no such cancellation.
