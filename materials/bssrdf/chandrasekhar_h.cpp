@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "materials/core/gauss_legendre.h"
+#include "materials/core/root_finding.h"
 
 namespace scatterlab {
 
@@ -55,6 +56,13 @@ double ChandrasekharH::whiteSkyAlbedo() const { return 1.0 - 2.0 * std::sqrt(1.0
 
 double ChandrasekharH::brdf(double muI, double muO) const {
   return albedo_ / (4.0 * Pi) * (*this)(muI) * (*this)(muO) / (muI + muO);
+}
+
+double searchlightAlbedoForReflectance(double reflectance) {
+  if (!(reflectance >= 0 && reflectance < 1))
+    throw std::invalid_argument("searchlight albedo: the reflectance must be in [0, 1)");
+  return bisectIncreasing([](double c) { return ChandrasekharH(c).directionalAlbedo(1.0); }, reflectance, 0.0, 1.0,
+                          1e-12);
 }
 
 }  // namespace scatterlab

@@ -44,4 +44,10 @@ class ChandrasekharH {
   std::array<double, NodeCount> values_{};
 };
 
+// The single-scattering albedo c whose index-matched isotropic half-space reflects
+// `reflectance` of a normally incident beam, 1 - H(1) sqrt(1 - c) = reflectance (in [0, 1)),
+// by bisection in c to 1e-12: what maps Burley's multiple-scattering albedo A of the
+// searchlight fits (mfp = 1, g = 0) to the medium a random walk simulates.
+double searchlightAlbedoForReflectance(double reflectance);
+
 }  // namespace scatterlab

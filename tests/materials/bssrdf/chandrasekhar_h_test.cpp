@@ -50,5 +50,15 @@ TEST(ChandrasekharH, ReciprocalBrdfWithTheDirectionalAlbedo) {
   EXPECT_DOUBLE_EQ(H.brdf(0.3, 0.7), H.brdf(0.7, 0.3));
 }
 
+TEST(ChandrasekharH, SearchlightAlbedoInvertsTheDirectionalAlbedo) {
+  // Burley's A range of the searchlight fit, A in [0.1, 0.99]. c is found to 1e-12; the
+  // reflectance then to dR/dc * 1e-12 = H(1) / (2 sqrt(1 - c)) * 1e-12 ~ 4e-10 at A = 0.99.
+  for (const double A : {0.1, 0.5, 0.9, 0.99}) {
+    const double c = searchlightAlbedoForReflectance(A);
+    EXPECT_NEAR(ChandrasekharH(c).directionalAlbedo(1.0), A, 1e-9) << A;
+  }
+  EXPECT_THROW(searchlightAlbedoForReflectance(1.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace scatterlab
