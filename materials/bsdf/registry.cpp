@@ -89,28 +89,6 @@ std::vector<std::string> modelTypes() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Choices backed by enums: the spec's list of strings and the build function's lookup come
-// from one table, so the two cannot drift apart.
-
-template <typename E> struct NamedChoice {
-  const char* name;
-  E value;
-};
-
-template <typename E, size_t N> std::vector<std::string> choiceNames(const std::array<NamedChoice<E>, N>& table) {
-  std::vector<std::string> names;
-  for (const auto& entry : table) names.emplace_back(entry.name);
-  return names;
-}
-
-// The spec has already checked that `name` is one of the table's names.
-template <typename E, size_t N> E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name) {
-  const auto it = std::find_if(table.begin(), table.end(), [&](const auto& entry) { return name == entry.name; });
-  if (it == table.end()) throw std::logic_error("choice \"" + std::string(name) + "\" missing from its table");
-  return it->value;
-}
-
-// ---------------------------------------------------------------------------------------
 // Generic parsing over a ParameterSpec.
 
 // One real of a number, rgb or pair: finite and inside the spec's range. `whole` is the

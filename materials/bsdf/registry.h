@@ -7,6 +7,7 @@
 // its entry in registry.cpp.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <map>
 #include <memory>
@@ -99,6 +100,26 @@ class MaterialParameters {
 
   std::map<std::string, ParameterValue, std::less<>> values_;
 };
+
+// Choices backed by enums: the spec's list of strings and the build function's lookup come
+// from one table, so the two cannot drift apart.
+template <typename E> struct NamedChoice {
+  const char* name;
+  E value;
+};
+
+template <typename E, size_t N> std::vector<std::string> choiceNames(const std::array<NamedChoice<E>, N>& table) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.emplace_back(entry.name);
+  return names;
+}
+
+// The spec has already checked that `name` is one of the table's names.
+template <typename E, size_t N> E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name) {
+  for (const auto& entry : table)
+    if (name == entry.name) return entry.value;
+  throw std::logic_error("choice \"" + std::string(name) + "\" missing from its table");
+}
 
 using BuildBsdfFunction = std::unique_ptr<BsdfModel> (*)(const MaterialParameters&);
 // Fills defaults that depend on other parameters (a subsurface medium's index of refraction)

@@ -12,30 +12,15 @@ namespace {
 
 using nlohmann::json;
 
-template <typename E> struct Named {
-  const char* name;
-  E value;
-};
-constexpr std::array<Named<ProfileModel>, 4> Profiles{{{"dipole", ProfileModel::Dipole},
-                                                       {"better-dipole", ProfileModel::BetterDipole},
-                                                       {"beam-diffusion", ProfileModel::BeamDiffusion},
-                                                       {"burley", ProfileModel::Burley}}};
-constexpr std::array<Named<BurleyFit>, 3> BurleyFits{{{"searchlight", BurleyFit::Searchlight},
-                                                      {"diffuse", BurleyFit::DiffuseTransmission},
-                                                      {"searchlight-dmfp", BurleyFit::SearchlightDiffuseMfp}}};
-constexpr std::array<Named<SubsurfaceBoundary>, 2> Boundaries{{{"smooth", SubsurfaceBoundary::Smooth},
-                                                               {"rough", SubsurfaceBoundary::Rough}}};
-
-template <typename E, size_t N> std::vector<std::string> namesOf(const std::array<Named<E>, N>& table) {
-  std::vector<std::string> names;
-  for (const auto& entry : table) names.emplace_back(entry.name);
-  return names;
-}
-template <typename E, size_t N> E valueOf(const std::array<Named<E>, N>& table, const std::string& name) {
-  for (const auto& entry : table)
-    if (name == entry.name) return entry.value;
-  throw std::logic_error("choice \"" + name + "\" missing from its table");
-}
+constexpr std::array<NamedChoice<ProfileModel>, 4> Profiles{{{"dipole", ProfileModel::Dipole},
+                                                             {"better-dipole", ProfileModel::BetterDipole},
+                                                             {"beam-diffusion", ProfileModel::BeamDiffusion},
+                                                             {"burley", ProfileModel::Burley}}};
+constexpr std::array<NamedChoice<BurleyFit>, 3> BurleyFits{{{"searchlight", BurleyFit::Searchlight},
+                                                            {"diffuse", BurleyFit::DiffuseTransmission},
+                                                            {"searchlight-dmfp", BurleyFit::SearchlightDiffuseMfp}}};
+constexpr std::array<NamedChoice<SubsurfaceBoundary>, 2> Boundaries{{{"smooth", SubsurfaceBoundary::Smooth},
+                                                                     {"rough", SubsurfaceBoundary::Rough}}};
 
 // Jensen et al. 2001 use 1.3 for every medium but marble (1.5).
 constexpr double DefaultEta = 1.3;
@@ -104,9 +89,9 @@ ScatteringMedium mediumOf(const MaterialParameters& p, ProfileModel model, const
 
 SubsurfaceMaterial buildSubsurface(const MaterialParameters& p, const json& completed) {
   SubsurfaceMaterial material;
-  material.model = valueOf(Profiles, p.choice("profile"));
-  material.burleyFit = p.has("burley_fit") ? valueOf(BurleyFits, p.choice("burley_fit")) : BurleyFit::Searchlight;
-  material.boundary = valueOf(Boundaries, p.choice("boundary"));
+  material.model = choiceValue(Profiles, p.choice("profile"));
+  material.burleyFit = p.has("burley_fit") ? choiceValue(BurleyFits, p.choice("burley_fit")) : BurleyFit::Searchlight;
+  material.boundary = choiceValue(Boundaries, p.choice("boundary"));
   material.roughness = p.has("roughness") ? p.number("roughness") : 0.0;
   material.medium = mediumOf(p, material.model, completed);
   try {
@@ -136,7 +121,7 @@ MaterialModel subsurfaceMaterialModel() {
       .parameters =
           {{.name = "profile",
             .kind = ParameterKind::Choice,
-            .choices = namesOf(Profiles),
+            .choices = choiceNames(Profiles),
             .defaultValue = "burley",
             .description = "the diffusion profile R(r)"},
            {.name = "medium",
@@ -166,13 +151,13 @@ MaterialModel subsurfaceMaterialModel() {
             .description = "multiplies every coefficient (divides every length): 10 for a scene in cm"},
            {.name = "burley_fit",
             .kind = ParameterKind::Choice,
-            .choices = namesOf(BurleyFits),
+            .choices = choiceNames(BurleyFits),
             .description = "burley only (default \"searchlight\"): the shape factor s(A) fitted to a searchlight "
                            "(d = mfp / s), diffuse transmission (d = mfp / s), or a searchlight with the diffuse mean "
                            "free path (d = dmfp / s)"},
            {.name = "boundary",
             .kind = ParameterKind::Choice,
-            .choices = namesOf(Boundaries),
+            .choices = choiceNames(Boundaries),
             .defaultValue = "smooth",
             .description = "the interface of the medium (for rendering): smooth or rough dielectric of index eta"},
            {.name = "roughness",
