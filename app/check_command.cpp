@@ -109,6 +109,8 @@ SubsurfaceCheckOptions subsurfaceOptions(const BsdfCheckOptions& kit) {
   options.seed = kit.seed;
   options.alpha = kit.alpha;
   options.chiSquareTestCount = kit.chiSquareTestCount;
+  options.imageDir = kit.imageDir;
+  options.imagesOnFailureOnly = kit.imagesOnFailureOnly;
   return options;
 }
 

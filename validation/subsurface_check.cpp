@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "materials/core/quadrature.h"
+#include "validation/chi_square_images.h"
 #include "validation/consistency.h"
 #include "validation/radial_chi_square.h"
 #include "validation/subsurface_negative_controls.h"
@@ -93,6 +94,12 @@ RadiusConsistency radiusConsistency(const RadialProfile& profile, int channel, s
   return result;
 }
 
+void maybeWriteImages(const SubsurfaceCheckOptions& options, const std::string& label, const std::string& test,
+                      const ChiSquareResult& chi, const std::string& layout) {
+  if (options.imageDir && (!options.imagesOnFailureOnly || !chi.passed))
+    writeChiSquareImages(*options.imageDir, safeFileStem(label + "_" + test), chi, layout);
+}
+
 double threshold(const SubsurfaceCheckOptions& options, const RadialProfile& profile) {
   return sidakSignificance(options.alpha, options.chiSquareTestCount > 0 ? options.chiSquareTestCount
                                                                          : subsurfaceChiSquareTestCount(profile));
@@ -162,9 +169,10 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
     out.rows.push_back(boundRow(label, "profile energy" + channel, std::abs(energy - total[c]), ProfileEnergyTolerance,
                                 format("quadrature %.8f vs closed form %.8f", energy, total[c])));
     const uint64_t seed = deriveSeed(options.seed, uint64_t(c));
-    out.rows.push_back(chiSquareRow(
-        label, "radius chi2" + channel,
-        radiusChiSquare(profile, profile, c, options.radiusBins, options.samples, seed, alpha)));
+    const ChiSquareResult radius = radiusChiSquare(profile, profile, c, options.radiusBins, options.samples, seed, alpha);
+    out.rows.push_back(chiSquareRow(label, "radius chi2" + channel, radius));
+    maybeWriteImages(options, label, std::string("radius_") + ChannelNames[c], radius,
+                     "one row: radius bins equal in the radius CDF, from r = 0 outward");
     const RadiusConsistency consistency =
         radiusConsistency(profile, c, std::min(options.samples, ConsistencySamples), seed);
     out.rows.push_back(boundRow(label, "radius consistency" + channel,
@@ -185,6 +193,10 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
         sampler, profile, frame, [&](const Vec2d& p) { return probeExitPdfOnPlane(sampler, probeFrame(frame), p); },
         options.probeRings, options.probeSectors, options.samples, deriveSeed(options.seed, 10 + uint64_t(frame)), alpha);
     out.rows.push_back(chiSquareRow(label, std::string("probe chi2 (") + toString(frame) + " frame)", probe.chiSquare));
+    maybeWriteImages(options, label, std::string("probe_") + toString(frame), probe.chiSquare,
+                     "row-major; rows: rings around the entry point from the centre outward (equal in the radial CDF, "
+                     "with every channel's r_max as an edge); cols: sectors from phi = -pi; last row: its first cell "
+                     "is the plane beyond the outer ring");
     // The hit rate is binomial: its standard error bounds how well it can match the integral.
     const double standardError =
         std::sqrt(std::max(probe.hitFraction * (1.0 - probe.hitFraction), 1e-12) / double(options.samples));

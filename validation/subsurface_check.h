@@ -7,7 +7,9 @@
 // plane and tilted against it, plus the probe pdf's normalisation against the hit rate.
 #pragma once
 
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "materials/bssrdf/separable_bssrdf.h"
@@ -25,6 +27,9 @@ struct SubsurfaceCheckOptions {
   uint64_t seed = 1;
   double alpha = 0.01;          // family-wise, Sidak-corrected over every chi-square test
   int chiSquareTestCount = 0;   // tests in the whole suite; 0: this run's count
+  // Observed / expected / residual maps and tables of every chi-square test (chi_square_images.h).
+  std::optional<std::filesystem::path> imageDir;
+  bool imagesOnFailureOnly = false;
 };
 
 // Tolerances of the deterministic rows.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -121,6 +122,21 @@ TEST(SubsurfaceCheckCli, ChecksASubsurfaceMaterialWithControls) {
                            "control: radial shortcut pdf", "control: wrong channel weights"})
     EXPECT_TRUE(tests.contains(test)) << test;
   EXPECT_EQ(out["materials"][0]["material"]["eta"], 1.5);
+}
+
+TEST(SubsurfaceCheckCli, WritesTheChiSquareMapsOfEveryTest) {
+  const auto dir = uniquePath("subsurface-images");
+  const ProcessResult run = runScatterlab({"check", R"({"type": "subsurface"})", "--samples", "5000", "--grid", "8x16",
+                                           "--images", dir.string()});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name.find("radius_") != std::string::npos || name.find("probe_") != std::string::npos) << name;
+    ++files;
+  }
+  EXPECT_EQ(files, 5 * 4);  // 3 radius + 2 probe tests: observed, expected, residual, tables
+  std::filesystem::remove_all(dir);
 }
 
 TEST(SubsurfaceCheckCli, BadSubsurfaceMaterialExitsTwo) {
