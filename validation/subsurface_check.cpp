@@ -150,7 +150,7 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
                                 const SubsurfaceCheckOptions& options, const ProgressCallback& progress) {
   const RadialProfile& profile = bssrdf.profile();
   const double alpha = threshold(options, profile);
-  const double steps = 3.0 + 3.0;
+  const double steps = 5.0;  // three channels, two probe frames
   int step = 0;
   auto report = [&](const std::string& stage) {
     if (progress) progress(stage, step++ / steps);
@@ -189,8 +189,9 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
   const ProbeSampler sampler(profile);
   for (const ProbeFrame frame : {ProbeFrame::Aligned, ProbeFrame::Tilted}) {
     report(std::string("probe ") + toString(frame));
+    const Framed axes = probeFrame(frame);
     const ProbeChiSquareResult probe = probeChiSquare(
-        sampler, profile, frame, [&](const Vec2d& p) { return probeExitPdfOnPlane(sampler, probeFrame(frame), p); },
+        sampler, profile, frame, [&](const Vec2d& p) { return probeExitPdfOnPlane(sampler, axes, p); },
         options.probeRings, options.probeSectors, options.samples, deriveSeed(options.seed, 10 + uint64_t(frame)), alpha);
     out.rows.push_back(chiSquareRow(label, std::string("probe chi2 (") + toString(frame) + " frame)", probe.chiSquare));
     maybeWriteImages(options, label, std::string("probe_") + toString(frame), probe.chiSquare,
