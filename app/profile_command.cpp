@@ -10,7 +10,7 @@
 #include "app/option_values.h"
 #include "app/progress.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
-#include "materials/bssrdf/half_space_walk.h"
+#include "validation/half_space_reference.h"
 #include "materials/bssrdf/subsurface_registry.h"
 
 namespace scatterlab {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "materials/bssrdf/beam_diffusion_table.h"
-#include "materials/bssrdf/half_space_walk.h"
+#include "validation/half_space_reference.h"
 #include "materials/bssrdf/measured_media.h"
 #include "materials/bssrdf/probe_sampling.h"
 #include "materials/bssrdf/subsurface_material.h"

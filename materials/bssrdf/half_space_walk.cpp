@@ -1,15 +1,9 @@
 #include "materials/bssrdf/half_space_walk.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "materials/bsdf/fresnel.h"
 #include "materials/bssrdf/henyey_greenstein.h"
@@ -18,9 +12,6 @@
 namespace scatterlab {
 
 namespace {
-
-// Paths per unit of parallel work (and per progress report).
-constexpr uint64_t ChunkPaths = 1024;
 
 // The direction (propagating into the medium, z < 0) refracted from an outside direction
 // propagating downward with cosine cosOutside > 0 and azimuth along (cx, cy).
@@ -42,11 +33,6 @@ Vec3d entryDirection(const HalfSpaceWalkSettings& s, CounterRng& rng) {
   }
   return {0.0, 0.0, -1.0};  // unreachable: the mean transmittance is > 0.5 for eta in (0, 4]
 }
-
-struct Tally {
-  std::vector<uint64_t> counts;
-  uint64_t escaped = 0, absorbed = 0, truncated = 0, events = 0;
-};
 
 }  // namespace
 
@@ -94,59 +80,48 @@ WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& s, CounterRng& rng) {
   }
 }
 
-HalfSpaceWalkResult simulateHalfSpace(const HalfSpaceWalkSettings& settings, const WalkProgress& progress) {
-  settings.validate();
-  const std::vector<double>& edges = settings.radiusEdges;
-  const size_t bins = edges.empty() ? 0 : edges.size() - 1;
-  const uint64_t chunks = (settings.paths + ChunkPaths - 1) / ChunkPaths;
-  tbb::enumerable_thread_specific<Tally> tallies([bins] {
-    Tally t;
-    t.counts.assign(bins, 0);
-    return t;
-  });
-  std::atomic<uint64_t> done{0};
-  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<uint64_t>(0, chunks, 1), [&](const tbb::blocked_range<uint64_t>& range) {
-      Tally& tally = tallies.local();
-      for (uint64_t chunk = range.begin(); chunk != range.end(); ++chunk) {
-        const uint64_t first = chunk * ChunkPaths, last = std::min(first + ChunkPaths, settings.paths);
-        for (uint64_t i = first; i < last; ++i) {
-          CounterRng rng(settings.seed, i);
-          const WalkPath path = traceHalfSpacePath(settings, rng);
-          tally.events += path.scatteringEvents;
-          if (path.truncated) {
-            ++tally.truncated;
-          } else if (!path.escaped) {
-            ++tally.absorbed;
-          } else {
-            ++tally.escaped;
-            const size_t k = size_t(std::upper_bound(edges.begin(), edges.end(), path.exitRadius) - edges.begin());
-            if (k >= 1 && k <= bins) ++tally.counts[k - 1];
-          }
-        }
-        const uint64_t finished = done.fetch_add(last - first) + (last - first);
-        if (progress) progress(double(finished) / double(settings.paths));
-      }
-    });
-  });
+void HalfSpaceTally::add(const WalkPath& path, const std::vector<double>& radiusEdges) {
+  scatteringEvents += path.scatteringEvents;
+  if (path.truncated) {
+    ++truncated;
+  } else if (!path.escaped) {
+    ++absorbed;
+  } else {
+    ++escaped;
+    const size_t k = size_t(std::upper_bound(radiusEdges.begin(), radiusEdges.end(), path.exitRadius) - radiusEdges.begin());
+    if (k >= 1 && k <= counts.size()) ++counts[k - 1];
+  }
+}
 
+void HalfSpaceTally::merge(const HalfSpaceTally& other) {
+  escaped += other.escaped;
+  absorbed += other.absorbed;
+  truncated += other.truncated;
+  scatteringEvents += other.scatteringEvents;
+  for (size_t k = 0; k < counts.size(); ++k) counts[k] += other.counts[k];
+}
+
+void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last, HalfSpaceTally& tally) {
+  for (uint64_t i = first; i < last; ++i) {
+    CounterRng rng(settings.seed, i);
+    tally.add(traceHalfSpacePath(settings, rng), settings.radiusEdges);
+  }
+}
+
+HalfSpaceWalkResult halfSpaceWalkResult(const HalfSpaceWalkSettings& settings, const HalfSpaceTally& tally) {
+  const std::vector<double>& edges = settings.radiusEdges;
   HalfSpaceWalkResult result;
   result.settings = settings;
-  result.counts.assign(bins, 0);
-  // Integer sums: the same whatever the threads' order.
-  for (const Tally& t : tallies) {
-    result.escaped += t.escaped;
-    result.absorbed += t.absorbed;
-    result.truncated += t.truncated;
-    result.scatteringEvents += t.events;
-    for (size_t k = 0; k < bins; ++k) result.counts[k] += t.counts[k];
-  }
+  result.escaped = tally.escaped;
+  result.absorbed = tally.absorbed;
+  result.truncated = tally.truncated;
+  result.scatteringEvents = tally.scatteringEvents;
+  result.counts = tally.counts;
   const double n = double(settings.paths);
   const double p = double(result.escaped) / n;
   result.totalReflectance = p;
   result.totalStdError = std::sqrt(p * (1.0 - p) / n);
-  for (size_t k = 0; k < bins; ++k) {
+  for (size_t k = 0; k < result.counts.size(); ++k) {
     const double area = Pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]);
     const double pk = double(result.counts[k]) / n;
     result.profile.push_back(pk / area);

@@ -13,11 +13,12 @@
 // standard errors are exact.
 //
 // Path i draws from CounterRng(seed, i) and the tallies are integers, so the result is the
-// same for any number of threads (TBB).
+// same for any number of threads. This file holds one path and the tally; the parallel driver
+// over many paths, simulateHalfSpace, is validation/half_space_reference.h (materials stays free
+// of threading, DESIGN.md).
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "materials/core/rng.h"
@@ -66,9 +67,22 @@ struct WalkPath {
 };
 WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& settings, CounterRng& rng);
 
-// fraction of the paths done, from worker threads (may be empty).
-using WalkProgress = std::function<void(double fraction)>;
-HalfSpaceWalkResult simulateHalfSpace(const HalfSpaceWalkSettings& settings, const WalkProgress& progress = {});
+// Integer counts of a set of paths: merged in any order, they give the same result.
+struct HalfSpaceTally {
+  std::vector<uint64_t> counts;  // escaped paths per annulus of the settings' radius edges
+  uint64_t escaped = 0, absorbed = 0, truncated = 0, scatteringEvents = 0;
+
+  explicit HalfSpaceTally(size_t annuli = 0) : counts(annuli, 0) {}
+  void add(const WalkPath& path, const std::vector<double>& radiusEdges);
+  void merge(const HalfSpaceTally& other);
+};
+
+// Traces paths [first, last) of the settings (path i from CounterRng(seed, i)) into the tally.
+void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last, HalfSpaceTally& tally);
+
+// Total reflectance and R(r) per annulus with their binomial standard errors, from the tally
+// of all settings.paths paths.
+HalfSpaceWalkResult halfSpaceWalkResult(const HalfSpaceWalkSettings& settings, const HalfSpaceTally& tally);
 
 // n + 1 edges: 0, then n log-spaced edges from `first` to `last` (mm).
 std::vector<double> logRadiusEdges(double first, double last, int n);

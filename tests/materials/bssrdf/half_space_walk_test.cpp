@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "materials/bssrdf/chandrasekhar_h.h"
-#include "materials/bssrdf/half_space_walk.h"
+#include "validation/half_space_reference.h"
 
 namespace scatterlab {
 namespace {
