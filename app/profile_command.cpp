@@ -8,6 +8,7 @@
 
 #include "app/exit_code.h"
 #include "app/option_values.h"
+#include "app/profile_annuli.h"
 #include "app/progress.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
 #include "validation/half_space_reference.h"
@@ -42,27 +43,12 @@ LoadedMaterial loadSubsurface(const std::string& argument) {
 // Annuli from 0: [0, min], then log-spaced to max. By default max is where every reflecting
 // channel holds 99.9% of its profile, and min a thousandth of it.
 std::vector<double> radiusEdges(const ProfileCommandOptions& options, const RadialProfile& profile) {
-  double largest = 0.0;
-  for (int c = 0; c < 3; ++c)
-    if (profile.totalReflectance()[c] > 0) largest = std::max(largest, profile.sampleRadius(c, 0.999));
-  if (!(largest > 0)) largest = 1.0;
-  const double maxRadius = options.maxRadius.value_or(largest);
+  const double maxRadius = options.maxRadius.value_or(profileExtent(profile));
   const double minRadius = options.minRadius.value_or(1e-3 * maxRadius);
   if (!(minRadius < maxRadius))
     throw InputError("--min-radius: " + std::to_string(minRadius) + " mm is not below the largest radius " +
                      std::to_string(maxRadius) + " mm; allowed: 0 < --min-radius < --max-radius");
   return logRadiusEdges(minRadius, maxRadius, options.bins);
-}
-
-// R averaged over each annulus, exactly: Rd (cdf(r1) - cdf(r0)) / (pi (r1^2 - r0^2)).
-std::vector<double> annulusMeans(const RadialProfile& profile, int channel, const std::vector<double>& edges) {
-  std::vector<double> means;
-  const double total = profile.totalReflectance()[channel];
-  for (size_t k = 0; k + 1 < edges.size(); ++k) {
-    const double mass = total > 0 ? total * (profile.radiusCdf(channel, edges[k + 1]) - profile.radiusCdf(channel, edges[k])) : 0.0;
-    means.push_back(mass / (Pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k])));
-  }
-  return means;
 }
 
 struct ChannelWalk {
@@ -72,15 +58,10 @@ struct ChannelWalk {
 
 HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const ScatteringMedium& medium, int channel,
                                    const std::vector<double>& edges) {
-  HalfSpaceWalkSettings s;
-  s.albedo = options.albedo.empty() ? medium.albedo()[channel] : options.albedo[options.albedo.size() == 3 ? channel : 0];
-  s.extinction = medium.extinction()[channel];
-  s.g = options.g.value_or(medium.g);
-  s.eta = options.eta.value_or(medium.eta);
-  s.radiusEdges = edges;
-  s.paths = options.paths;
-  s.seed = deriveSeed(options.seed, uint64_t(channel));
-  s.threads = options.threads;
+  HalfSpaceWalkSettings s = mediumWalkSettings(medium, channel, edges, options.paths, options.seed, options.threads);
+  if (!options.albedo.empty()) s.albedo = options.albedo[options.albedo.size() == 3 ? channel : 0];
+  s.g = options.g.value_or(s.g);
+  s.eta = options.eta.value_or(s.eta);
   return s;
 }
 
