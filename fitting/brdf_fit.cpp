@@ -10,7 +10,7 @@
 
 #include "fitting/initialization.h"
 #include "fitting/least_squares.h"
-#include "fitting/radial_profile_fit.h"
+#include "fitting/ceres_support.h"
 
 namespace scatterlab::fitting {
 
@@ -68,7 +68,7 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
   out.initialCost = 2.0 * summary.initial_cost;
   out.finalCost = 2.0 * summary.final_cost;
   out.iterations = int(summary.iterations.size()) - 1;
-  out.termination = detail::terminationName(summary.termination_type);
+  out.termination = terminationName(summary.termination_type);
   out.message = summary.message;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   return out;
@@ -141,6 +141,7 @@ void computeCovariance(const BrdfLeastSquares& problem, FitResult& result) {
 
 FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOptions& options) {
   if (samples.empty()) throw std::invalid_argument("no valid samples to fit");
+  quietCeresLogging();
   const auto begin = std::chrono::steady_clock::now();
   FitResult result;
   const size_t p = model.parameterCount();

@@ -203,22 +203,33 @@ BrdfLeastSquares::ChannelSums BrdfLeastSquares::channelSums(const double* x) con
 
 void compressNormalEquations(const NormalEquations& equations, double* residuals, double* jacobian) {
   const Eigen::Index p = equations.gradient.size();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(equations.hessian);
+  // Eigen-decompose the column-normalised matrix D^-1/2 H D^-1/2 = V Lambda V^T (D = diag H),
+  // so that the rank test does not depend on the parameters' units (an exponent of 2e4 and an
+  // albedo of 0.01 differ by 1e16 in their raw eigenvalues); then
+  // J_f = Lambda^1/2 V^T D^1/2 and f = Lambda^-1/2 V^T D^-1/2 g.
+  Eigen::VectorXd root(p);
+  for (Eigen::Index j = 0; j < p; ++j) {
+    const double d = equations.hessian(j, j);
+    root[j] = d > 0 ? std::sqrt(d) : 1.0;
+  }
+  const Eigen::MatrixXd normalised = root.cwiseInverse().asDiagonal() * equations.hessian * root.cwiseInverse().asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(normalised);
   const Eigen::VectorXd& lambda = eigen.eigenvalues();
   const Eigen::MatrixXd& v = eigen.eigenvectors();
-  // Below this, an eigenvalue is round-off of a rank-deficient H.
-  const double threshold = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300) * 1e-14 * double(p);
-  const Eigen::VectorXd projected = v.transpose() * equations.gradient;
+  // The normalised matrix has a unit diagonal (its eigenvalues sum to at most p); below this an
+  // eigenvalue is round-off of a rank-deficient H.
+  const double threshold = 1e-14 * double(p);
+  const Eigen::VectorXd projected = v.transpose() * root.cwiseInverse().asDiagonal() * equations.gradient;
   double explained = 0;
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> j(jacobian, p + 1, p);
   j.setZero();
   for (Eigen::Index k = 0; k < p; ++k) {
     const double l = lambda[k];
     if (l > threshold) {
-      const double root = std::sqrt(l);
-      residuals[k] = projected[k] / root;
+      const double sqrtLambda = std::sqrt(l);
+      residuals[k] = projected[k] / sqrtLambda;
       explained += residuals[k] * residuals[k];
-      j.row(k) = root * v.col(k).transpose();
+      j.row(k) = sqrtLambda * v.col(k).transpose() * root.asDiagonal();
     } else {
       residuals[k] = 0.0;
     }

@@ -11,11 +11,12 @@
 // Compression. For p parameters only H = J^T J (p x p), the gradient g = J^T r and the cost
 // S = sum rho enter Levenberg-Marquardt's step, its model of the cost, Jacobi scaling and the
 // covariance. So Ceres is given ONE residual block of p + 1 residuals,
-//   f = [Lambda^(-1/2) V^T g ; e],  J_f = [Lambda^(1/2) V^T ; 0],  H = V Lambda V^T,
-//   e = sqrt(S - |Lambda^(-1/2) V^T g|^2),
+//   f = [Lambda^(-1/2) V^T D^(-1/2) g ; e],  J_f = [Lambda^(1/2) V^T D^(1/2) ; 0],
+//   D^(-1/2) H D^(-1/2) = V Lambda V^T (D = diag H),  e = sqrt(S - |f_(1..p)|^2),
 // for which J_f^T J_f = H, J_f^T f = g and |f|^2 = S exactly (e^2 >= 0 since the unscaled
-// part of S, sum (rho(s) - rho'(s) s), is >= 0 for concave rho with rho(0) = 0). Directions
-// with Lambda ~ 0 (rank deficiency) get f = 0 there: g has no component along them. When
+// part of S, sum (rho(s) - rho'(s) s), is >= 0 for concave rho with rho(0) = 0). The
+// column normalisation keeps the rank test free of the parameters' units; directions with
+// Lambda ~ 0 (rank deficiency) get f = 0: g has no component along them. When
 // Ceres asks for the cost alone, f = [0, ..., 0, sqrt(S)] and no derivatives are computed.
 //
 // Work: the samples are cut into fixed chunks of ChunkSize; chunks are evaluated in parallel

@@ -13,15 +13,4 @@ double radialWeight(RadialWeighting weighting, double r, double value) {
   return 1.0;
 }
 
-std::string terminationName(ceres::TerminationType type) {
-  switch (type) {
-    case ceres::CONVERGENCE: return "CONVERGENCE";
-    case ceres::NO_CONVERGENCE: return "NO_CONVERGENCE";
-    case ceres::FAILURE: return "FAILURE";
-    case ceres::USER_SUCCESS: return "USER_SUCCESS";
-    case ceres::USER_FAILURE: return "USER_FAILURE";
-  }
-  return "UNKNOWN";
-}
-
 }  // namespace scatterlab::fitting::detail

@@ -40,6 +40,8 @@
 
 #include <ceres/ceres.h>
 
+#include "fitting/ceres_support.h"
+
 namespace scatterlab::fitting {
 
 enum class RadialWeighting { Plain, Area, Relative };
@@ -84,7 +86,6 @@ template <typename Profile> struct RadialPointResidual {
 };
 
 double radialWeight(RadialWeighting weighting, double r, double value);
-std::string terminationName(ceres::TerminationType type);
 
 }  // namespace detail
 
@@ -102,6 +103,7 @@ RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double>
   if (!options.weights.empty() && options.weights.size() != n)
     throw std::invalid_argument("fitRadialProfile: weights need one value per point");
 
+  quietCeresLogging();
   RadialFitResult result;
   result.parameters = options.start;
   double* p = result.parameters.data();
@@ -129,7 +131,7 @@ RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double>
   result.cost = 2.0 * summary.final_cost;
   result.sigma2 = result.cost / double(n - size_t(K));
   result.iterations = int(summary.iterations.size()) - 1;
-  result.termination = detail::terminationName(summary.termination_type);
+  result.termination = terminationName(summary.termination_type);
   result.message = summary.message;
   result.converged = summary.termination_type == ceres::CONVERGENCE;
 

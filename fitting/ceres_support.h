@@ -1,0 +1,18 @@
+// What the fitter's Ceres calls share: names of Ceres's outcomes, and its logging kept quiet.
+#pragma once
+
+#include <string>
+
+#include <ceres/types.h>
+
+namespace scatterlab::fitting {
+
+// "CONVERGENCE", "NO_CONVERGENCE", "FAILURE", ...
+std::string terminationName(ceres::TerminationType type);
+
+// Ceres reports through glog, to stderr; the fitter reports every outcome itself (a
+// rank-deficient covariance is a warning of the fit, not a log line), so glog's messages below
+// FATAL are turned off, once, for the process.
+void quietCeresLogging();
+
+}  // namespace scatterlab::fitting
