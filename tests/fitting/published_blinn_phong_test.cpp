@@ -4,9 +4,9 @@
 // and Beckmann's exp(-tan^2 theta_h / alpha^2) ~ exp(-theta_h^2 / alpha^2), so a half-vector
 // lobe fitted to the same material as a Cook-Torrance lobe has n alpha^2 / 2 ~ 1; the mirror
 // lobe's angle to the mirror direction is about 2 theta_h in the plane of incidence, which
-// puts n alpha^2 / 2 near 1/4. Over the 86 materials fitted with both models the median is 1.29
-// (1.29, quartiles 0.82 and 2.5: the settled reading is the half-vector lobe, `blinn-phong`,
-// whose recovery of the published lines recovery_test.cpp checks).
+// puts n alpha^2 / 2 near 1/4. Over the 86 materials fitted with both models the median is
+// 1.29 (quartiles 0.82 and 2.5): the settled reading is the half-vector lobe, `blinn-phong`,
+// whose recovery of the published lines recovery_test.cpp checks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
