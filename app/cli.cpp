@@ -6,6 +6,7 @@
 
 #include "app/check_command.h"
 #include "app/exit_code.h"
+#include "app/fit_command.h"
 #include "app/generate_table_command.h"
 #include "app/models_command.h"
 #include "app/synth_command.h"
@@ -44,6 +45,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* check = addCheckCommand(app, checkOptions);
   SynthCommandOptions synthOptions;
   const CLI::App* synth = addSynthCommand(app, synthOptions);
+  FitCommandOptions fitOptions;
+  const CLI::App* fit = addFitCommand(app, fitOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -55,6 +58,7 @@ int runCli(int argc, char** argv) {
     if (*check) return runCheckCommand(checkOptions);
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);
     if (*synth) return runSynthCommand(synthOptions);
+    if (*fit) return runFitCommand(fitOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);

@@ -36,13 +36,23 @@ class ProgressCallback final : public ceres::IterationCallback {
   int maxIterations_;
 };
 
-SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const FitOptions& options,
-                   const std::string& stage) {
-  const FitModel& model = problem.model();
-  const auto& parameters = model.parameters();
-  for (size_t j = 0; j < x.size(); ++j) x[j] = std::clamp(x[j], parameters[j].lower, parameters[j].upper);
+// Parameters on a bound whose gradient points out of the box (the cost would fall further
+// past the bound): held for the next Ceres run.
+std::vector<int> blockedByBounds(const FitModel& model, const std::vector<double>& x, const Eigen::VectorXd& gradient) {
+  std::vector<int> blocked;
+  for (size_t j = 0; j < x.size(); ++j) {
+    const FitParameter& p = model.parameters()[j];
+    const double g = gradient[Eigen::Index(j)];  // of S / 2; the cost falls along -g
+    if ((x[j] <= p.lower && g > 0) || (x[j] >= p.upper && g < 0)) blocked.push_back(int(j));
+  }
+  return blocked;
+}
+
+// One Ceres run with `held` parameters constant.
+SolveSummary solveOnce(const BrdfLeastSquares& problem, std::vector<double>& x, const std::vector<int>& held,
+                       const FitOptions& options, const std::string& stage) {
+  const auto& parameters = problem.model().parameters();
   SolveSummary out;
-  out.initial = x;
   CompressedCostFunction cost(problem);
   ceres::Problem::Options problemOptions;
   problemOptions.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -52,6 +62,7 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
     ceresProblem.SetParameterLowerBound(x.data(), int(j), parameters[j].lower);
     ceresProblem.SetParameterUpperBound(x.data(), int(j), parameters[j].upper);
   }
+  if (!held.empty()) ceresProblem.SetManifold(x.data(), new ceres::SubsetManifold(int(x.size()), held));
   ceres::Solver::Options solverOptions;
   solverOptions.linear_solver_type = ceres::DENSE_QR;
   solverOptions.max_num_iterations = options.maxIterations;
@@ -64,13 +75,51 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
   solverOptions.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(solverOptions, &ceresProblem, &summary);
-  out.final = x;
   out.initialCost = 2.0 * summary.initial_cost;
   out.finalCost = 2.0 * summary.final_cost;
   out.iterations = int(summary.iterations.size()) - 1;
   out.termination = terminationName(summary.termination_type);
   out.message = summary.message;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
+  return out;
+}
+
+// Levenberg-Marquardt with the registry's bounds. Ceres projects a step onto the box, so a
+// parameter that the data push past its bound (an albedo that would go negative) keeps
+// shrinking the steps of all the others; such parameters are held (an active set: the ones
+// on a bound whose gradient points outward), released again when their gradient turns
+// inward, and the run repeated until the set no longer changes.
+SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const FitOptions& options,
+                   const std::string& stage) {
+  const FitModel& model = problem.model();
+  const auto& parameters = model.parameters();
+  for (size_t j = 0; j < x.size(); ++j) x[j] = std::clamp(x[j], parameters[j].lower, parameters[j].upper);
+  SolveSummary out;
+  out.initial = x;
+  std::vector<int> held = blockedByBounds(model, x, problem.normalEquations(x.data()).gradient);
+  constexpr int MaxRounds = 5;
+  for (int round = 0; round < MaxRounds; ++round) {
+    SolveSummary run;
+    if (held.size() == x.size()) {
+      run.initialCost = run.finalCost = problem.cost(x.data());
+      run.termination = "CONVERGENCE";
+      run.message = "every parameter is held on a bound";
+      run.converged = true;
+    } else {
+      run = solveOnce(problem, x, held, options, stage);
+    }
+    if (round == 0) out.initialCost = run.initialCost;
+    out.finalCost = run.finalCost;
+    out.iterations += run.iterations;
+    out.termination = run.termination;
+    out.message = run.message;
+    out.converged = run.converged;
+    if (!run.converged && run.termination != "NO_CONVERGENCE") break;
+    const std::vector<int> next = blockedByBounds(model, x, problem.normalEquations(x.data()).gradient);
+    if (next == held) break;
+    held = next;
+  }
+  out.final = x;
   return out;
 }
 
@@ -109,6 +158,27 @@ NullSpace nullSpaceOf(const Eigen::MatrixXd& hessian, const FitModel& model) {
   return out;
 }
 
+// The compressed block of fixed normal equations: what ceres::Covariance differentiates, so
+// that the covariance costs no second pass over the samples.
+class FixedNormalEquations final : public ceres::CostFunction {
+ public:
+  explicit FixedNormalEquations(const NormalEquations& equations) : equations_(equations) {
+    const int p = int(equations.gradient.size());
+    set_num_residuals(p + 1);
+    mutable_parameter_block_sizes()->push_back(p);
+  }
+  bool Evaluate(double const* const*, double* residuals, double** jacobians) const override {
+    const size_t p = size_t(equations_.gradient.size());
+    std::vector<double> jacobian((p + 1) * p);
+    compressNormalEquations(equations_, residuals, jacobian.data());
+    if (jacobians && jacobians[0]) std::copy(jacobian.begin(), jacobian.end(), jacobians[0]);
+    return true;
+  }
+
+ private:
+  const NormalEquations& equations_;
+};
+
 void computeCovariance(const BrdfLeastSquares& problem, FitResult& result) {
   const FitModel& model = problem.model();
   const size_t p = model.parameterCount();
@@ -117,7 +187,7 @@ void computeCovariance(const BrdfLeastSquares& problem, FitResult& result) {
   const NullSpace nullSpace = nullSpaceOf(equations.hessian, model);
   result.unidentified = nullSpace.directions;
   result.rankDeficient = nullSpace.dimension > 0;
-  CompressedCostFunction cost(problem);
+  FixedNormalEquations cost(equations);
   ceres::Problem::Options problemOptions;
   problemOptions.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem ceresProblem(problemOptions);
