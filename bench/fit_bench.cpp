@@ -8,6 +8,8 @@
 // table.
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
+
 #include "fitting/brdf_fit.h"
 #include "fitting/least_squares.h"
 #include "materials/bsdf/cook_torrance.h"
@@ -59,20 +61,34 @@ void normalEquationsOfFullTable(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(problem.normalEquations(x.data()).cost);
 }
 
+// CPU seconds of every thread of the process so far: on a shared machine the wall time
+// depends on the other load, the CPU time does not (wall on an idle machine with T cores is
+// about the larger of the main thread's time and this over T).
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 void fitLambertGgxFullTable(benchmark::State& state) {
   alumBronzeSamples();
   FitOptions options;
   options.metric = Metric::Ngan;
   options.threads = int(state.range(0));
   FitResult result;
+  double cpu = 0;
   for (auto _ : state) {
     // The whole command's work after reading the file: the usable cells, then the fit.
+    const double before = processCpuSeconds();
     const BrdfSamples samples = samplesFromMerl(alumBronze());
     result = fitBrdf(lambertGgx(), samples, options);
+    cpu += processCpuSeconds() - before;
   }
   state.counters["refine_iterations"] = result.final.iterations;
   state.counters["alpha"] = result.x.back();
   state.counters["converged"] = result.final.converged;
+  state.counters["process_cpu_s"] = cpu / double(state.iterations());
 }
 
 BENCHMARK(samplesFromTable)->Unit(benchmark::kMillisecond);

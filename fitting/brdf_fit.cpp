@@ -63,14 +63,9 @@ SolveSummary solveOnce(const BrdfLeastSquares& problem, std::vector<double>& x, 
     ceresProblem.SetParameterUpperBound(x.data(), int(j), parameters[j].upper);
   }
   if (!held.empty()) ceresProblem.SetManifold(x.data(), new ceres::SubsetManifold(int(x.size()), held));
-  ceres::Solver::Options solverOptions;
-  solverOptions.linear_solver_type = ceres::DENSE_QR;
-  solverOptions.max_num_iterations = options.maxIterations;
-  solverOptions.function_tolerance = options.functionTolerance;
-  solverOptions.parameter_tolerance = options.parameterTolerance;
-  solverOptions.gradient_tolerance = options.gradientTolerance;
+  ceres::Solver::Options solverOptions = denseSolverOptions(options.maxIterations, options.functionTolerance,
+                                                            options.parameterTolerance, options.gradientTolerance);
   solverOptions.num_threads = 1;  // one residual block; the parallelism is inside it
-  solverOptions.logging_type = ceres::SILENT;
   ProgressCallback callback(options.progress, stage, options.maxIterations);
   solverOptions.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;

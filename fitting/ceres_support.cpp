@@ -6,6 +6,18 @@
 
 namespace scatterlab::fitting {
 
+ceres::Solver::Options denseSolverOptions(int maxIterations, double functionTolerance, double parameterTolerance,
+                                          double gradientTolerance) {
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = maxIterations;
+  options.function_tolerance = functionTolerance;
+  options.parameter_tolerance = parameterTolerance;
+  options.gradient_tolerance = gradientTolerance;
+  options.logging_type = ceres::SILENT;
+  return options;
+}
+
 std::string terminationName(ceres::TerminationType type) {
   switch (type) {
     case ceres::CONVERGENCE: return "CONVERGENCE";

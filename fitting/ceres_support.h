@@ -3,9 +3,15 @@
 
 #include <string>
 
+#include <ceres/solver.h>
 #include <ceres/types.h>
 
 namespace scatterlab::fitting {
+
+// Levenberg-Marquardt on a dense problem with few parameters (DENSE_QR), silent, with these
+// limits: what every fit of this library runs.
+ceres::Solver::Options denseSolverOptions(int maxIterations, double functionTolerance, double parameterTolerance,
+                                          double gradientTolerance);
 
 // "CONVERGENCE", "NO_CONVERGENCE", "FAILURE", ...
 std::string terminationName(ceres::TerminationType type);

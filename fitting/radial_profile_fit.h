@@ -119,13 +119,8 @@ RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double>
     if (!options.lower.empty()) problem.SetParameterLowerBound(p, k, options.lower[size_t(k)]);
     if (!options.upper.empty()) problem.SetParameterUpperBound(p, k, options.upper[size_t(k)]);
   }
-  ceres::Solver::Options solverOptions;
-  solverOptions.linear_solver_type = ceres::DENSE_QR;
-  solverOptions.max_num_iterations = options.maxIterations;
-  solverOptions.function_tolerance = options.functionTolerance;
-  solverOptions.parameter_tolerance = options.parameterTolerance;
-  solverOptions.gradient_tolerance = options.gradientTolerance;
-  solverOptions.logging_type = ceres::SILENT;
+  const ceres::Solver::Options solverOptions = denseSolverOptions(
+      options.maxIterations, options.functionTolerance, options.parameterTolerance, options.gradientTolerance);
   ceres::Solver::Summary summary;
   ceres::Solve(solverOptions, &problem, &summary);
   result.cost = 2.0 * summary.final_cost;

@@ -25,24 +25,6 @@ const std::string Truth =
     R"({"type":"ngan-cook-torrance","albedo":0.4,"eta":0.3,"roughness":0.1}]})";
 const std::vector<std::string> Quick{"--samples", "20000", "--grid-points", "64", "--starts", "2"};
 
-std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-void expectMentions(const std::string& text, const std::vector<std::string>& fragments) {
-  for (const std::string& fragment : fragments)
-    EXPECT_NE(text.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from:\n" << text;
-}
-
-void expectBadInput(const std::vector<std::string>& args, const std::vector<std::string>& fragments) {
-  const ProcessResult run = runScatterlab(args);
-  EXPECT_EQ(run.exitCode, 2) << describe(run);
-  EXPECT_TRUE(run.out.empty()) << describe(run);
-  EXPECT_EQ(run.err.rfind("scatterlab: error: ", 0), 0u) << describe(run);
-  expectMentions(run.err, fragments);
-}
-
 double parameter(const json& report, const std::string& name) {
   for (const json& p : report.at("fit").at("parameters"))
     if (p.at("name") == name) return p.at("value").get<double>();
