@@ -49,11 +49,10 @@ std::vector<int> blockedByBounds(const FitModel& model, const std::vector<double
 }
 
 // One Ceres run with `held` parameters constant.
-SolveSummary solveOnce(const BrdfLeastSquares& problem, std::vector<double>& x, const std::vector<int>& held,
-                       const FitOptions& options, const std::string& stage) {
-  const auto& parameters = problem.model().parameters();
+SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std::vector<double>& x,
+                       const std::vector<int>& held, const FitOptions& options, const std::string& stage) {
+  const auto& parameters = model.parameters();
   SolveSummary out;
-  CompressedCostFunction cost(problem);
   ceres::Problem::Options problemOptions;
   problemOptions.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem ceresProblem(problemOptions);
@@ -84,14 +83,16 @@ SolveSummary solveOnce(const BrdfLeastSquares& problem, std::vector<double>& x, 
 // shrinking the steps of all the others; such parameters are held (an active set: the ones
 // on a bound whose gradient points outward), released again when their gradient turns
 // inward, and the run repeated until the set no longer changes.
+// `equations` (optional) receives the normal equations at the solution.
 SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const FitOptions& options,
-                   const std::string& stage) {
+                   const std::string& stage, NormalEquations* equations = nullptr) {
   const FitModel& model = problem.model();
   const auto& parameters = model.parameters();
   for (size_t j = 0; j < x.size(); ++j) x[j] = std::clamp(x[j], parameters[j].lower, parameters[j].upper);
   SolveSummary out;
   out.initial = x;
-  std::vector<int> held = blockedByBounds(model, x, problem.normalEquations(x.data()).gradient);
+  CompressedCostFunction cost(problem);
+  std::vector<int> held = blockedByBounds(model, x, cost.normalEquationsAt(x).gradient);
   constexpr int MaxRounds = 5;
   for (int round = 0; round < MaxRounds; ++round) {
     SolveSummary run;
@@ -101,7 +102,7 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
       run.message = "every parameter is held on a bound";
       run.converged = true;
     } else {
-      run = solveOnce(problem, x, held, options, stage);
+      run = solveOnce(cost, model, x, held, options, stage);
     }
     if (round == 0) out.initialCost = run.initialCost;
     out.finalCost = run.finalCost;
@@ -110,11 +111,12 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
     out.message = run.message;
     out.converged = run.converged;
     if (!run.converged && run.termination != "NO_CONVERGENCE") break;
-    const std::vector<int> next = blockedByBounds(model, x, problem.normalEquations(x.data()).gradient);
+    const std::vector<int> next = blockedByBounds(model, x, cost.normalEquationsAt(x).gradient);
     if (next == held) break;
     held = next;
   }
   out.final = x;
+  if (equations) *equations = cost.normalEquationsAt(x);
   return out;
 }
 
@@ -174,11 +176,10 @@ class FixedNormalEquations final : public ceres::CostFunction {
   const NormalEquations& equations_;
 };
 
-void computeCovariance(const BrdfLeastSquares& problem, FitResult& result) {
-  const FitModel& model = problem.model();
+// `equations`: the normal equations at result.x.
+void computeCovariance(const FitModel& model, const NormalEquations& equations, FitResult& result) {
   const size_t p = model.parameterCount();
   std::vector<double> x = result.x;
-  const NormalEquations equations = problem.normalEquations(x.data());
   const NullSpace nullSpace = nullSpaceOf(equations.hessian, model);
   result.unidentified = nullSpace.directions;
   result.rankDeficient = nullSpace.dimension > 0;
@@ -258,10 +259,12 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
   // 3. Refinement on every sample.
   const MetricSamples allMetric(samples, options.metric);
   const BrdfLeastSquares problem(model, allMetric, loss.get(), options.threads);
+  NormalEquations equations;
   if (startSet.size() == samples.size()) {
     result.final = *best;
+    equations = problem.normalEquations(best->final.data());
   } else {
-    result.final = solve(problem, best->final, options, "refine");
+    result.final = solve(problem, best->final, options, "refine", &equations);
   }
   result.x = result.final.final;
 
@@ -274,7 +277,7 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
   }
   const double dof = double(result.observations) - double(p);
   result.sigma2 = dof > 0 ? result.final.finalCost / dof : std::numeric_limits<double>::quiet_NaN();
-  computeCovariance(problem, result);
+  computeCovariance(model, equations, result);
   for (size_t j = 0; j < p; ++j) {
     const FitParameter& fp = model.parameters()[j];
     ParameterEstimate e;

@@ -246,17 +246,36 @@ CompressedCostFunction::CompressedCostFunction(const BrdfLeastSquares& problem) 
 bool CompressedCostFunction::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
   const size_t p = problem_->parameterCount();
   const double* x = parameters[0];
+  // Ceres evaluates a point more than once (with bounds, its projected line search asks for
+  // the gradient at a candidate, then the cost and the Jacobian again once it is accepted):
+  // a repeated point reuses the kept sums.
+  const bool repeated = std::equal(x, x + p, lastX_.begin(), lastX_.end());
   if (!jacobians || !jacobians[0]) {
-    const double cost = problem_->cost(x);
+    const double cost = repeated ? last_.cost : problem_->cost(x);
     if (!std::isfinite(cost)) return false;
     std::fill(residuals, residuals + p, 0.0);
     residuals[p] = std::sqrt(cost);
     return true;
   }
-  const NormalEquations equations = problem_->normalEquations(x);
-  if (!std::isfinite(equations.cost) || !equations.hessian.allFinite() || !equations.gradient.allFinite()) return false;
-  compressNormalEquations(equations, residuals, jacobians[0]);
+  if (!repeated) {
+    NormalEquations equations = problem_->normalEquations(x);
+    if (!std::isfinite(equations.cost) || !equations.hessian.allFinite() || !equations.gradient.allFinite()) {
+      lastX_.clear();
+      return false;
+    }
+    lastX_.assign(x, x + p);
+    last_ = std::move(equations);
+  }
+  compressNormalEquations(last_, residuals, jacobians[0]);
   return true;
+}
+
+NormalEquations CompressedCostFunction::normalEquationsAt(const std::vector<double>& x) const {
+  if (x == lastX_) return last_;
+  NormalEquations equations = problem_->normalEquations(x.data());
+  lastX_ = x;
+  last_ = equations;
+  return equations;
 }
 
 }  // namespace scatterlab::fitting

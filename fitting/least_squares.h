@@ -109,14 +109,21 @@ class BrdfLeastSquares {
 };
 
 // The compressed residual block Ceres sees (header comment): p + 1 residuals, one parameter
-// block of size p.
+// block of size p. It keeps the normal equations of its last evaluation with derivatives:
+// Ceres's last one is at the accepted solution, so the gradient and J^T J there (for the
+// active bounds and the covariance) come without another pass over the samples.
 class CompressedCostFunction final : public ceres::CostFunction {
  public:
   explicit CompressedCostFunction(const BrdfLeastSquares& problem);
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
+  // The normal equations at x: the kept ones if they were evaluated at exactly x.
+  NormalEquations normalEquationsAt(const std::vector<double>& x) const;
+
  private:
   const BrdfLeastSquares* problem_;
+  mutable std::vector<double> lastX_;
+  mutable NormalEquations last_;
 };
 
 // The compressed form of (H, g, S): residual f (p + 1) and row-major Jacobian J_f
