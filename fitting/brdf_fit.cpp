@@ -50,7 +50,8 @@ std::vector<int> blockedByBounds(const FitModel& model, const std::vector<double
 
 // One Ceres run with `held` parameters constant.
 SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std::vector<double>& x,
-                       const std::vector<int>& held, const FitOptions& options, const std::string& stage) {
+                       const std::vector<int>& held, int maxIterations, const FitOptions& options,
+                       const std::string& stage) {
   const auto& parameters = model.parameters();
   SolveSummary out;
   ceres::Problem::Options problemOptions;
@@ -62,7 +63,7 @@ SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std:
     ceresProblem.SetParameterUpperBound(x.data(), int(j), parameters[j].upper);
   }
   if (!held.empty()) ceresProblem.SetManifold(x.data(), new ceres::SubsetManifold(int(x.size()), held));
-  ceres::Solver::Options solverOptions = denseSolverOptions(options.maxIterations, options.functionTolerance,
+  ceres::Solver::Options solverOptions = denseSolverOptions(maxIterations, options.functionTolerance,
                                                             options.parameterTolerance, options.gradientTolerance);
   solverOptions.num_threads = 1;  // one residual block; the parallelism is inside it
   ProgressCallback callback(options.progress, stage, options.maxIterations);
@@ -82,7 +83,8 @@ SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std:
 // parameter that the data push past its bound (an albedo that would go negative) keeps
 // shrinking the steps of all the others; such parameters are held (an active set: the ones
 // on a bound whose gradient points outward), released again when their gradient turns
-// inward, and the run repeated until the set no longer changes.
+// inward, and the run repeated until the set no longer changes. The rounds share one budget
+// of options.maxIterations.
 // `equations` (optional) receives the normal equations at the solution.
 SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const FitOptions& options,
                    const std::string& stage, NormalEquations* equations = nullptr) {
@@ -102,7 +104,7 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
       run.message = "every parameter is held on a bound";
       run.converged = true;
     } else {
-      run = solveOnce(cost, model, x, held, options, stage);
+      run = solveOnce(cost, model, x, held, std::max(options.maxIterations - out.iterations, 1), options, stage);
     }
     if (round == 0) out.initialCost = run.initialCost;
     out.finalCost = run.finalCost;
@@ -110,7 +112,7 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
     out.termination = run.termination;
     out.message = run.message;
     out.converged = run.converged;
-    if (!run.converged && run.termination != "NO_CONVERGENCE") break;
+    if (!run.converged || out.iterations >= options.maxIterations) break;
     const std::vector<int> next = blockedByBounds(model, x, cost.normalEquationsAt(x).gradient);
     if (next == held) break;
     held = next;

@@ -47,11 +47,11 @@ struct FitOptions {
   std::optional<double> robustScale;
   int gridBudget = 256;
   int starts = 3;
-  size_t gridSamples = 20000;
-  size_t startSamples = 100000;
+  size_t gridSamples = 20000;    // 0: all samples
+  size_t startSamples = 100000;  // 0: all samples (no separate refinement)
   uint64_t seed = 1;
-  int maxIterations = 100;
-  double functionTolerance = 1e-12;
+  int maxIterations = 100;        // per Ceres run (a start, the refinement)
+  double functionTolerance = 1e-10;
   double parameterTolerance = 1e-10;
   double gradientTolerance = 1e-14;
   int threads = 0;  // 0: all cores
