@@ -19,9 +19,9 @@ namespace {
 using nlohmann::json;
 
 // Reports Ceres's iterations as progress (the fraction of the iteration budget used).
-class ProgressCallback final : public ceres::IterationCallback {
+class IterationProgress final : public ceres::IterationCallback {
  public:
-  ProgressCallback(const FitProgress& progress, std::string stage, int maxIterations)
+  IterationProgress(const FitProgress& progress, std::string stage, int maxIterations)
       : progress_(progress), stage_(std::move(stage)), maxIterations_(maxIterations) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
     if (progress_)
@@ -66,7 +66,7 @@ SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std:
   ceres::Solver::Options solverOptions = denseSolverOptions(maxIterations, options.functionTolerance,
                                                             options.parameterTolerance, options.gradientTolerance);
   solverOptions.num_threads = 1;  // one residual block; the parallelism is inside it
-  ProgressCallback callback(options.progress, stage, options.maxIterations);
+  IterationProgress callback(options.progress, stage, maxIterations);
   solverOptions.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(solverOptions, &ceresProblem, &summary);
