@@ -6,6 +6,7 @@
 
 #include "app/check_command.h"
 #include "app/exit_code.h"
+#include "app/fit_command.h"
 #include "app/generate_table_command.h"
 #include "app/lab/lab_command.h"
 #include "app/models_command.h"
@@ -48,6 +49,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* synth = addSynthCommand(app, synthOptions);
   ProfileCommandOptions profileOptions;
   const CLI::App* profile = addProfileCommand(app, profileOptions);
+  FitCommandOptions fitOptions;
+  const CLI::App* fit = addFitCommand(app, fitOptions);
   LabCommandOptions labOptions;
   const CLI::App* lab = addLabCommand(app, labOptions);
 
@@ -62,6 +65,7 @@ int runCli(int argc, char** argv) {
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);
     if (*synth) return runSynthCommand(synthOptions);
     if (*profile) return runProfileCommand(profileOptions);
+    if (*fit) return runFitCommand(fitOptions);
     if (*lab) return runLabCommand(labOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
