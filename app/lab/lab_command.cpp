@@ -8,6 +8,7 @@
 
 #include "app/exit_code.h"
 #include "app/lab/check_section.h"
+#include "app/lab/fit_section.h"
 #include "app/lab/html.h"
 #include "app/lab/lab_material.h"
 #include "app/lab/lab_settings.h"
@@ -87,7 +88,22 @@ class MaterialReporter {
       report_.keyNumbers.push_back({"missing measurements", html::number(100.0 * missing / std::max(reachable, 1.0), 3) +
                                                                 "% of the reachable cells"});
       report_.sections.push_back(std::move(measured));
+      addFitSection();
     }
+  }
+
+  void addFitSection() {
+    fits_ = timer_.time("fit", m_.name, [&] { return fitMaterial(m_, settings_, progress_); });
+    report_.sections.push_back(fitSection(m_, settings_, fits_));
+    const FamilyFit* best = nullptr;
+    const auto meanError = [](const FamilyFit& f) {
+      return (f.result.relativeError.x + f.result.relativeError.y + f.result.relativeError.z) / 3.0;
+    };
+    for (const FamilyFit& f : fits_.families)
+      if (!f.result.x.empty() && (!best || meanError(f) < meanError(*best))) best = &f;
+    if (best)
+      report_.keyNumbers.push_back({"best fit", best->name + ", mean relative error " + html::number(meanError(*best), 3) +
+                                                    (best->verdict.good ? "" : " (POOR)")});
   }
 
   void addSubsurfaceSection() {
@@ -111,6 +127,7 @@ class MaterialReporter {
   PhaseTimer& timer_;
   ProgressCallback progress_;
   MaterialReport report_;
+  MaterialFits fits_;
 };
 
 // The command as the user could type it again (materials in single quotes).

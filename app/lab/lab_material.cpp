@@ -85,7 +85,9 @@ LabMaterial loadLabMaterial(const std::string& argument) {
   const json material = loadMaterialArgument(argument);
   if (isInlineMaterial(argument)) {
     const std::string type = material.is_object() ? material.value("type", std::string("material")) : "material";
-    return fromDescription(type, material);
+    LabMaterial loaded = fromDescription(type, material);
+    loaded.about = "Given as inline JSON: " + material.dump();
+    return loaded;
   }
   try {
     LabMaterial loaded = fromDescription(fs::path(argument).stem().string(), material);

@@ -18,6 +18,10 @@ LabSettings common(uint64_t seed) {
   s.seed = seed;
   s.kit.seed = seed;
   s.albedoAnglesDeg = albedoAngles();
+  s.fitFamilies = {{"Lambert + Cook-Torrance (Ngan)", "lambertian+ngan-cook-torrance"},
+                   {"Lambert + GGX", "lambertian+conductor"},
+                   {"Lambert + Ward (Ngan)", "lambertian+ngan-ward"},
+                   {"Lambert + Blinn-Phong", "lambertian+blinn-phong"}};
   return s;
 }
 
@@ -32,6 +36,11 @@ LabSettings LabSettings::quickMode(uint64_t seed) {
   s.kit.wiThetaDeg = {0, 45, 80};
   s.kit.reciprocityPairs = 2000;
   s.walkPaths = 200000;
+  s.fitSamples = 30000;
+  s.fitGridPoints = 128;
+  s.fitStarts = 2;
+  s.fitGridSamples = 10000;
+  s.fitStartSamples = 0;  // the whole subset: no separate refinement
   return s;
 }
 
@@ -47,6 +56,7 @@ LabSettings LabSettings::fullMode(uint64_t seed) {
   s.albedoPhiCells = 64;
   s.albedoProbeSamples = 100000;
   s.walkPaths = 2000000;
+  s.fitSamples = 0;
   return s;
 }
 
@@ -67,6 +77,8 @@ nlohmann::json LabSettings::toJson() const {
                       {"probe_samples", albedoProbeSamples}}},
           {"slice_phi_d_deg", slicePhiDiffDeg},
           {"walk_paths_per_channel", walkPaths},
+          {"fits", {{"families", fitFamilies}, {"samples", fitSamples}, {"grid_points", fitGridPoints},
+                    {"starts", fitStarts}, {"grid_samples", fitGridSamples}, {"start_samples", fitStartSamples}}},
           {"profile_bins", profileBins}};
 }
 

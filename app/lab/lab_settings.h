@@ -11,10 +11,16 @@
 // albedo curve            19 angles, quadrature on      19 angles, 32 x 64 cells, 1e5 probes
 //                         16 x 32 cells, 2e4 probes
 // random walk             2e5 paths per channel         2e6 paths per channel
+// fits (metric ngan)      Lambert + Cook-Torrance (Ngan), + GGX, + Ward (Ngan), + Blinn-Phong
+//                         on a 30,000-cell stratified   on every usable cell (about 1e6)
+//                         subset, 128 grid points,      256 grid points, 3 starts
+//                         2 starts
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -40,6 +46,11 @@ struct LabSettings {
 
   uint64_t walkPaths = 200000;  // per channel
   int profileBins = 24;
+
+  std::vector<std::pair<std::string, std::string>> fitFamilies;  // name, --model spec
+  size_t fitSamples = 30000;       // stratified subset of the usable cells; 0: all
+  int fitGridPoints = 256, fitStarts = 3;
+  size_t fitGridSamples = 20000, fitStartSamples = 100000;  // fitting/brdf_fit.h FitOptions
 
   static LabSettings quickMode(uint64_t seed);
   static LabSettings fullMode(uint64_t seed);

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 MeasurementPerturbation showcasePerturbation() {
   MeasurementPerturbation p;
-  p.gainSigma = 0.02;
+  p.gainSigma = 0.0;  // no gain error: the published fit stays the ground truth of every channel
   p.logSigma = 0.05;
   p.noiseFloor = 1e-4;
   p.missingAboveDeg = 85.0;
@@ -66,8 +66,8 @@ LabMaterial measuredStyle(TableCache& cache, const std::string& name, const std:
   m.groundTruth = parsePublishedFitLine(material.fitLine).components();
   for (json& component : m.groundTruth) component = completeMaterial(component);
   m.about = "Measured-style " + what + ": a MERL-layout table synthesised from the published Ngan et al. 2005 "
-            "Cook-Torrance fit of MERL's " + name + ", with 2% channel gain error, 5% log-normal noise, a 1e-4 "
-            "noise floor and no measurements beyond 85 degrees (" + cache.file(name).string() + ")";
+            "Cook-Torrance fit of MERL's " + name + ", with 5% log-normal noise, a 1e-4 noise floor and no "
+            "measurements beyond 85 degrees (" + cache.file(name).string() + ")";
   return m;
 }
 

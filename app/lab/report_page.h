@@ -22,8 +22,8 @@ struct ReportRun {
   std::string title = "scatterlab lab report";
   std::string mode;        // "quick" or "full"
   std::string createdAt;   // ISO 8601, UTC
-  nlohmann::json settings;
-  nlohmann::json timings;  // PhaseTimer::toJson()
+  nlohmann::json settings = nlohmann::json::object();
+  nlohmann::json timings = nlohmann::json::object();  // PhaseTimer::toJson()
   std::string command;     // the command line
 };
 

@@ -4,8 +4,9 @@
 // is not blank, and that the page logged no console error and no request failed. Saves a
 // full-page screenshot beside the report (DIR/../report-screenshot.png, or SCREENSHOT).
 //
-// Usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png]
-// Exit 0 when every check passes; otherwise prints each failure and exits 1.
+// Usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N]
+// --expect-failed N: exactly N materials must be marked FAIL (default 0), each with its failing
+// rows listed. Exit 0 when every check passes; otherwise prints each failure and exits 1.
 import { createRequire } from 'node:module';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -16,9 +17,13 @@ const here = path.dirname(fileURLToPath(import.meta.url));
 const require = createRequire(path.join(here, '..', '..', 'package.json'));
 const { chromium } = require('playwright-core');
 
-const [reportDir, screenshotArg] = process.argv.slice(2);
-if (!reportDir) {
-  console.error('usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png]');
+const args = process.argv.slice(2);
+let expectedFailed = 0;
+const expectAt = args.indexOf('--expect-failed');
+if (expectAt >= 0) expectedFailed = Number(args.splice(expectAt, 2)[1]);
+const [reportDir, screenshotArg] = args;
+if (!reportDir || !Number.isInteger(expectedFailed)) {
+  console.error('usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N]');
   process.exit(2);
 }
 const index = path.resolve(reportDir, 'index.html');
@@ -82,11 +87,20 @@ try {
   const verdicts = await page.evaluate(() => ({
     materials: document.querySelectorAll('article.material').length,
     summaryRows: document.querySelectorAll('table.summary tbody tr').length,
-    pass: document.querySelectorAll('.badge.pass').length,
-    fail: document.querySelectorAll('.badge.fail').length,
+    failedRows: document.querySelectorAll('table.summary tbody tr.failed').length,
+    failedArticles: Array.from(document.querySelectorAll('article.material.failed')).map((a) => ({
+      id: a.id, listed: a.querySelectorAll('.failures tr.failed').length,
+      colour: getComputedStyle(a.querySelector('h2 .badge')).backgroundColor })),
   }));
   if (verdicts.materials === 0 || verdicts.summaryRows !== verdicts.materials)
     fail('summary rows (' + verdicts.summaryRows + ') do not match the materials (' + verdicts.materials + ')');
+  if (verdicts.failedRows !== expectedFailed || verdicts.failedArticles.length !== expectedFailed)
+    fail('expected ' + expectedFailed + ' failed materials, the page marks ' + verdicts.failedRows + ' in the summary and ' +
+         verdicts.failedArticles.length + ' sections');
+  for (const failed of verdicts.failedArticles) {
+    if (failed.listed === 0) fail('failed material ' + failed.id + ' lists no failing rows');
+    if (failed.colour !== 'rgb(207, 34, 46)') fail('failed material ' + failed.id + ' badge is not red: ' + failed.colour);
+  }
 
   await page.screenshot({ path: screenshot, fullPage: true });
   console.log(JSON.stringify({ index, screenshot, images: images.length, charts: charts.length, verdicts,
