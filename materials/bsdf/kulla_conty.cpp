@@ -70,7 +70,7 @@ KullaContyLobe::KullaContyLobe(std::shared_ptr<const WhiteMicrofacetAlbedo> albe
 std::optional<Vec3d> LossLobeSampler::sample(const Vec2d& u) const {
   const Vec2d point = density_.sample(u);
   const double phi = point.x, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
-  const double mu = cosMap(projectedAlpha(cosPhi, sinPhi)).cosAt(point.y);
+  const double mu = cosMap(alphaX_ == alphaY_ ? alphaX_ : projectedAlpha(cosPhi, sinPhi)).cosAt(point.y);
   if (!(mu > 0)) return std::nullopt;
   const double sinTheta = safeSqrt(1.0 - mu * mu);
   return Vec3d(sinTheta * cosPhi, sinTheta * sinPhi, mu);
@@ -78,9 +78,11 @@ std::optional<Vec3d> LossLobeSampler::sample(const Vec2d& u) const {
 
 double LossLobeSampler::pdf(const Vec3d& wo) const {
   if (!(wo.z > 0)) return 0.0;
-  const double r = std::sqrt(wo.x * wo.x + wo.y * wo.y);
+  // Isotropic: the density does not depend on the azimuth (its two rows are equal).
+  const bool isotropic = alphaX_ == alphaY_;
+  const double r = isotropic ? 0.0 : std::sqrt(wo.x * wo.x + wo.y * wo.y);
   const double cosPhi = r > 0 ? wo.x / r : 1.0, sinPhi = r > 0 ? wo.y / r : 0.0;
-  const CosMap map = cosMap(projectedAlpha(cosPhi, sinPhi));
+  const CosMap map = cosMap(isotropic ? alphaX_ : projectedAlpha(cosPhi, sinPhi));
   const double v = map.coordinate(std::min(wo.z, 1.0));
   const double jacobian = map.derivative(v);  // dmu/dv; dw = dmu dphi
   if (!(jacobian > 0)) return 0.0;
