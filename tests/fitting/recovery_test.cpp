@@ -76,7 +76,7 @@ TEST(Recovery, MicrofacetLobesWithLambertian) {
 // The conductor lobe: the fitter's scale is the blend weight the truth carries it with (it has
 // no registry parameter of its own), spelt out here; GGX and Beckmann with a held copper index.
 TEST(Recovery, ConductorScaleAndRoughness) {
-  for (const std::string& distribution : {"ggx", "beckmann"}) {
+  for (const char* distribution : {"ggx", "beckmann"}) {
     const json lobe{{"type", "conductor"}, {"distribution", distribution}, {"alpha", 0.07}, {"metal", "Cu"}};
     const json lambertian{{"type", "lambertian"}, {"albedo", {0.1, 0.2, 0.3}}};
     const Rgb scale(0.6, 0.5, 0.4);
@@ -122,7 +122,7 @@ TEST(Recovery, DisneyWithMetallicFittedReportsItsDegeneracy) {
   EXPECT_LT(result.final.finalCost, 1e-12 * result.starts.front().initialCost);  // fits the data exactly
   EXPECT_TRUE(result.rankDeficient);
   ASSERT_EQ(result.unidentified.size(), 1u);
-  for (const std::string& name : {"disney.metallic", "disney.specular", "disney.specularTint"})
+  for (const char* name : {"disney.metallic", "disney.specular", "disney.specularTint"})
     EXPECT_NE(result.unidentified[0].find(name), std::string::npos) << result.unidentified[0];
   EXPECT_TRUE(result.covarianceAvailable);  // the pseudo-inverse
 }
