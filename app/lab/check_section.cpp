@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "app/check_command.h"
 #include "app/lab/html.h"
 #include "materials/bsdf/registry.h"
 #include "validation/bsdf_check.h"
@@ -16,21 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-// VALIDATION.md's negative control: sample from a roughness 10% off the one pdf() uses.
-constexpr double RoughnessMismatchFactor = 1.1;
-
-SubsurfaceCheckOptions subsurfaceOptions(const BsdfCheckOptions& kit) {
-  SubsurfaceCheckOptions options;
-  options.samples = kit.samples;
-  options.radiusBins = kit.thetaBins;
-  options.probeRings = std::max(kit.thetaBins / 2, 2);
-  options.probeSectors = std::max(kit.phiBins / 4, 2);
-  options.seed = kit.seed;
-  options.alpha = kit.alpha;
-  options.imageDir = kit.imageDir;
-  return options;
-}
 
 // "a10b" < "a9b" is wrong for angles: compare runs of digits by value.
 bool naturalLess(const std::string& a, const std::string& b) {
@@ -140,7 +126,7 @@ CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settin
   fs::create_directories(*kit.imageDir);
   CheckOutcome outcome;
   if (material.subsurface) {
-    const SubsurfaceCheckOptions options = subsurfaceOptions(kit);
+    const SubsurfaceCheckOptions options = subsurfaceCheckOptions(kit);
     outcome.report = runSubsurfaceChecks(material.subsurface->bssrdf(), material.name, options, progress);
     if (settings.negativeControls)
       outcome.controls = runSubsurfaceNegativeControls(*material.subsurface->profile, material.name, options, progress);
@@ -148,8 +134,7 @@ CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settin
   }
   outcome.report = runBsdfChecks(*material.bsdf, material.name, kit, progress);
   if (settings.negativeControls) {
-    const auto mismatched = withMismatchedRoughness(material.description, RoughnessMismatchFactor);
-    const std::unique_ptr<BsdfModel> altered = mismatched ? makeBsdf(*mismatched) : nullptr;
+    const std::unique_ptr<BsdfModel> altered = makeRoughnessMismatchSampler(material.description);
     outcome.controls = runNegativeControls(*material.bsdf, altered.get(), material.name, kit, progress);
   }
   return outcome;
