@@ -1,5 +1,6 @@
-// Files compiled into the executable (app/lab/report_assets.cmake): Chart.js and its licence,
-// the report's own script and style sheet. `scatterlab lab` copies them into every report.
+// Files compiled into the executable (app/lab/report_assets.cmake). Those named report/NAME
+// (Chart.js and its licence, the report's own script and style sheet) are copied into every
+// report as assets/NAME.
 #pragma once
 
 #include <span>
@@ -8,7 +9,7 @@
 namespace scatterlab {
 
 struct EmbeddedAsset {
-  std::string_view name;  // the file name in the report's assets/ folder
+  std::string_view name;  // "report/chart.umd.min.js"
   std::span<const unsigned char> bytes;
 
   std::string_view text() const { return {reinterpret_cast<const char*>(bytes.data()), bytes.size()}; }

@@ -10,12 +10,12 @@ endif()
 file(READ ${LAB_CHART_JS_DIR}/package.json LAB_CHART_JS_PACKAGE)
 string(JSON LAB_CHART_JS_VERSION GET "${LAB_CHART_JS_PACKAGE}" version)
 
+# NAME PATH pairs. report/NAME is copied into every report's assets/ folder.
 set(LAB_ASSET_SOURCES
-  chart.umd.min.js ${LAB_CHART_JS_DIR}/dist/chart.umd.min.js
-  chart.js-LICENSE.md ${LAB_CHART_JS_DIR}/LICENSE.md
-  report.js ${CMAKE_CURRENT_LIST_DIR}/assets/report.js
-  report.css ${CMAKE_CURRENT_LIST_DIR}/assets/report.css
-  ${LAB_EXTRA_ASSETS})
+  report/chart.umd.min.js ${LAB_CHART_JS_DIR}/dist/chart.umd.min.js
+  report/chart.js-LICENSE.md ${LAB_CHART_JS_DIR}/LICENSE.md
+  report/report.js ${CMAKE_CURRENT_LIST_DIR}/assets/report.js
+  report/report.css ${CMAKE_CURRENT_LIST_DIR}/assets/report.css)
 set(LAB_ASSET_FILES "")
 set(LAB_ASSET_ARGUMENT "")
 while(LAB_ASSET_SOURCES)

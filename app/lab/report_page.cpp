@@ -138,8 +138,10 @@ std::string reportHtml(const ReportRun& run, const std::vector<MaterialReport>& 
 
 void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<MaterialReport>& materials) {
   fs::create_directories(dir / "assets");
+  constexpr std::string_view ReportAsset = "report/";
   for (const EmbeddedAsset& asset : embeddedAssets())
-    writeTextFileAtomically(dir / "assets" / std::string(asset.name), asset.text());
+    if (asset.name.substr(0, ReportAsset.size()) == ReportAsset)
+      writeTextFileAtomically(dir / "assets" / std::string(asset.name.substr(ReportAsset.size())), asset.text());
   json summary = json::array();
   bool allPassed = true;
   for (const MaterialReport& m : materials) {

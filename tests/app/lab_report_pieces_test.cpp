@@ -66,11 +66,11 @@ TEST(Chart, KeepsBandsAndAxisLimits) {
 }
 
 TEST(EmbeddedAssets, HoldChartJsItsLicenceAndTheReportFiles) {
-  const std::string_view chart = embeddedAsset("chart.umd.min.js").text();
+  const std::string_view chart = embeddedAsset("report/chart.umd.min.js").text();
   EXPECT_NE(chart.find("Chart.js v" + std::string(chartJsVersion())), std::string_view::npos);
-  EXPECT_NE(embeddedAsset("chart.js-LICENSE.md").text().find("MIT"), std::string_view::npos);
-  EXPECT_NE(embeddedAsset("report.js").text().find("scatterlabCharts"), std::string_view::npos);
-  EXPECT_NE(embeddedAsset("report.css").text().find(".badge.fail"), std::string_view::npos);
+  EXPECT_NE(embeddedAsset("report/chart.js-LICENSE.md").text().find("MIT"), std::string_view::npos);
+  EXPECT_NE(embeddedAsset("report/report.js").text().find("scatterlabCharts"), std::string_view::npos);
+  EXPECT_NE(embeddedAsset("report/report.css").text().find(".badge.fail"), std::string_view::npos);
   EXPECT_THROW(embeddedAsset("missing.js"), std::logic_error);
 }
 
