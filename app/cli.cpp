@@ -8,6 +8,7 @@
 #include "app/exit_code.h"
 #include "app/generate_table_command.h"
 #include "app/models_command.h"
+#include "app/render_command.h"
 #include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
 
@@ -44,6 +45,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* check = addCheckCommand(app, checkOptions);
   SynthCommandOptions synthOptions;
   const CLI::App* synth = addSynthCommand(app, synthOptions);
+  RenderCommandOptions renderOptions;
+  const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -55,6 +58,7 @@ int runCli(int argc, char** argv) {
     if (*check) return runCheckCommand(checkOptions);
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);
     if (*synth) return runSynthCommand(synthOptions);
+    if (*renderCommand) return runRenderCommand(renderOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);
