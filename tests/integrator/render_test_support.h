@@ -71,6 +71,23 @@ inline Image patchyMap(int height = 16) {
   return map;
 }
 
+// The variance of pixel (x, y)'s mean for a per-pixel test, made robust: a variance estimated
+// from a few dozen samples of a skewed distribution is often too small, so this is the larger
+// of the pixel's own estimate and the mean over its 3 x 3 neighbourhood (variance changes
+// slowly over a sphere), per channel.
+inline Rgb robustPixelVariance(const Image& variance, int x, int y) {
+  Rgb sum(0.0);
+  int count = 0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx < 0 || ny < 0 || nx >= variance.width() || ny >= variance.height()) continue;
+      sum += variance.rgb(nx, ny);
+      ++count;
+    }
+  return glm::max(variance.rgb(x, y), sum / double(count));
+}
+
 // z-score of a difference of two independent estimates.
 inline double zScore(double a, double varianceA, double b, double varianceB) {
   const double variance = varianceA + varianceB;
