@@ -53,12 +53,34 @@ void writeExr(const std::filesystem::path& path, const std::vector<ExrLayer>& la
   }
 }
 
-Image readExrRgb(const std::filesystem::path& path, const std::string& what) {
-  const std::string name = what + " " + inQuotes(path.string());
+namespace {
+
+// Throws unless `path` names an existing file.
+void checkReadable(const std::filesystem::path& path, const std::string& name) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) throw RenderInputError(name + ": no such file; allowed: an OpenEXR file");
   if (std::filesystem::is_directory(path, error))
     throw RenderInputError(name + ": is a directory; allowed: an OpenEXR file");
+}
+
+}  // namespace
+
+std::vector<std::string> readExrChannelNames(const std::filesystem::path& path) {
+  const std::string name = "EXR file " + inQuotes(path.string());
+  checkReadable(path, name);
+  try {
+    const Imf::InputFile file(path.c_str());
+    std::vector<std::string> names;
+    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) names.push_back(it.name());
+    return names;
+  } catch (const std::exception& error) {
+    throw RenderInputError(name + ": cannot be read as OpenEXR (" + error.what() + "); allowed: an OpenEXR file");
+  }
+}
+
+Image readExrRgb(const std::filesystem::path& path, const std::string& what) {
+  const std::string name = what + " " + inQuotes(path.string());
+  checkReadable(path, name);
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i window = file.header().dataWindow();

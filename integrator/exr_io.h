@@ -30,4 +30,8 @@ void writeExr(const std::filesystem::path& path, const std::vector<ExrLayer>& la
 // ("environment map").
 Image readExrRgb(const std::filesystem::path& path, const std::string& what = "EXR file");
 
+// The channel names of an EXR file, in the file's (alphabetical) order. Throws
+// RenderInputError like readExrRgb.
+std::vector<std::string> readExrChannelNames(const std::filesystem::path& path);
+
 }  // namespace scatterlab
