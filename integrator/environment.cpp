@@ -25,7 +25,8 @@ Environment Environment::fromMap(Image image, double strength, const Transform& 
     if (!(v >= 0) || !std::isfinite(v)) throw std::invalid_argument("Environment: radiance must be finite and >= 0");
 
   auto map = std::make_shared<Map>();
-  map->strength = strength;
+  map->width = width;
+  map->height = height;
   map->mapToWorld = mapToWorld.linear();
   map->worldToMap = glm::transpose(map->mapToWorld);  // a rotation: inverse = transpose
   map->rowCos.resize(size_t(height) + 1);
@@ -56,7 +57,19 @@ Environment Environment::fromMap(Image image, double strength, const Transform& 
     }
   }
   map->distribution = PiecewiseConstant2D(weights, size_t(height), size_t(width));
-  map->image = std::move(image);
+  map->black = !(map->distribution.total() > 0) || strength == 0;
+  map->texels.resize(size_t(width) * height * 4);
+  for (int r = 0; r < height; ++r) {
+    const double solidAngle = (2.0 * Pi / width) * (map->rowCos[r] - map->rowCos[r + 1]);
+    for (int c = 0; c < width; ++c) {
+      float* t = map->texels.data() + (size_t(r) * width + c) * 4;
+      const Rgb radiance = image.rgb(c, r) * strength;
+      t[0] = float(radiance.x);
+      t[1] = float(radiance.y);
+      t[2] = float(radiance.z);
+      t[3] = map->black ? 0.0f : float(map->distribution.probability(size_t(r), size_t(c)) / solidAngle);
+    }
+  }
   Environment e;
   e.map_ = std::move(map);
   return e;
@@ -75,28 +88,38 @@ Vec3d Environment::directionFromEquirect(const Vec2d& ut) {
   return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), std::cos(theta)};
 }
 
-Rgb Environment::lookup(const Vec2d& ut) const {
-  const Image& image = map_->image;
-  const int width = image.width(), height = image.height();
+EnvironmentValue Environment::lookup(const Vec2d& ut) const {
+  const Map& m = *map_;
+  const int width = m.width, height = m.height;
   const double x = ut.x * width - 0.5, y = std::clamp(ut.y * height - 0.5, 0.0, double(height - 1));
   const double fx = std::floor(x), fy = std::floor(y);
   const double tx = x - fx, ty = y - fy;
-  int x0 = int(fx) % width;
+  int x0 = int(fx);
   if (x0 < 0) x0 += width;
   const int x1 = x0 + 1 == width ? 0 : x0 + 1;
   const int y0 = int(fy), y1 = std::min(y0 + 1, height - 1);
-  const float* p00 = image.pixel(x0, y0);
-  const float* p10 = image.pixel(x1, y0);
-  const float* p01 = image.pixel(x0, y1);
-  const float* p11 = image.pixel(x1, y1);
-  Rgb out;
+  const float* p00 = m.texel(x0, y0);
+  const float* p10 = m.texel(x1, y0);
+  const float* p01 = m.texel(x0, y1);
+  const float* p11 = m.texel(x1, y1);
+  EnvironmentValue out;
   for (int c = 0; c < 3; ++c)
-    out[c] = (1 - ty) * ((1 - tx) * p00[c] + tx * p10[c]) + ty * ((1 - tx) * p01[c] + tx * p11[c]);
-  return out * map_->strength;
+    out.radiance[c] = (1 - ty) * ((1 - tx) * p00[c] + tx * p10[c]) + ty * ((1 - tx) * p01[c] + tx * p11[c]);
+  // The cell of (u, t) is column floor(u W), row floor(t H): one of the four texels read.
+  const bool right = ut.x * width >= double(x0) + 1.0 || (x0 == width - 1 && ut.x * width < 0.5);
+  const bool lower = ut.y * height >= double(y0) + 1.0;
+  const float* cell = right ? (lower ? p11 : p10) : (lower ? p01 : p00);
+  out.pdf = cell[3];
+  return out;
 }
 
 Rgb Environment::eval(const Vec3d& direction) const {
   if (!map_) return constant_;
+  return lookup(equirectFromDirection(map_->worldToMap * direction)).radiance;
+}
+
+EnvironmentValue Environment::evalWithPdf(const Vec3d& direction) const {
+  if (!map_) return {constant_, constant_ == Rgb(0.0) ? 0.0 : uniformSpherePdf()};
   return lookup(equirectFromDirection(map_->worldToMap * direction));
 }
 
@@ -106,28 +129,20 @@ std::optional<EnvironmentSample> Environment::sample(const Vec2d& u) const {
     return EnvironmentSample{sampleUniformSphere(u), constant_, uniformSpherePdf()};
   }
   const Map& m = *map_;
-  if (!(m.distribution.total() > 0) || m.strength == 0) return std::nullopt;
+  if (m.black) return std::nullopt;
   const auto cell = m.distribution.sample(u);
-  const double width = double(m.image.width());
   const double cosHi = m.rowCos[cell.row], cosLo = m.rowCos[cell.row + 1];
   const double cosTheta = cosHi + cell.remapped.x * (cosLo - cosHi);
   const double sinTheta = safeSqrt(1.0 - cosTheta * cosTheta);
-  const double phi = Pi - 2.0 * Pi * ((double(cell.column) + cell.remapped.y) / width);
+  const double uCoordinate = (double(cell.column) + cell.remapped.y) / m.width;
+  const double phi = Pi - 2.0 * Pi * uCoordinate;
   const Vec3d local(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
-  const double pdf = cell.probability / ((2.0 * Pi / width) * (cosHi - cosLo));
-  const Vec3d direction = m.mapToWorld * local;
-  return EnvironmentSample{direction, lookup(equirectFromDirection(local)), pdf};
+  // The cell's own density (the lookup at a point on a cell edge could read its neighbour's).
+  const double pdf = m.texel(int(cell.column), int(cell.row))[3];
+  const double t = std::clamp(safeAcos(cosTheta) * InvPi, 0.0, 1.0);
+  return EnvironmentSample{m.mapToWorld * local, lookup({uCoordinate, t}).radiance, pdf};
 }
 
-double Environment::pdf(const Vec3d& direction) const {
-  if (!map_) return constant_ == Rgb(0.0) ? 0.0 : uniformSpherePdf();
-  const Map& m = *map_;
-  if (!(m.distribution.total() > 0) || m.strength == 0) return 0.0;
-  const Vec2d ut = equirectFromDirection(m.worldToMap * direction);
-  const int width = m.image.width(), height = m.image.height();
-  const size_t column = size_t(std::min(int(ut.x * width), width - 1));
-  const size_t row = size_t(std::min(int(ut.y * height), height - 1));
-  return m.distribution.probability(row, column) / ((2.0 * Pi / width) * (m.rowCos[row] - m.rowCos[row + 1]));
-}
+double Environment::pdf(const Vec3d& direction) const { return evalWithPdf(direction).pdf; }
 
 }  // namespace scatterlab

@@ -16,6 +16,11 @@
 // bounded at the poles (no 1 / sin theta), and positive wherever the bilinear radiance is: the
 // integral over a cell weighs the 3 x 3 pixels around it with (1/8, 3/4, 1/8)^2 > 0, and those
 // are the only pixels bilinear interpolation inside the cell uses.
+//
+// Memory layout, for speed: each texel is stored once as (R, G, B) x strength followed by the
+// density of its cell, 16 bytes, so the bilinear lookup of a direction also reads that
+// direction's density from the same cache lines (evalWithPdf): an escaping ray's radiance and
+// MIS density cost two cache lines, not the four or more of separate image and CDF tables.
 #pragma once
 
 #include <memory>
@@ -34,6 +39,12 @@ struct EnvironmentSample {
   double pdf;  // per unit solid angle
 };
 
+// Radiance along a direction and the density with which sample() draws that direction.
+struct EnvironmentValue {
+  Rgb radiance;
+  double pdf;
+};
+
 // Rec. 709 luminance of linear RGB.
 inline double luminance(const Rgb& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
@@ -50,6 +61,8 @@ class Environment {
   bool isConstant() const { return !map_; }
   // Radiance arriving from `direction` (world, unit): what a ray escaping along it sees.
   Rgb eval(const Vec3d& direction) const;
+  // eval and pdf together, sharing the direction's lookup.
+  EnvironmentValue evalWithPdf(const Vec3d& direction) const;
   // A direction from u in [0, 1)^2 with its radiance and density; nothing when the
   // environment is black.
   std::optional<EnvironmentSample> sample(const Vec2d& u) const;
@@ -59,19 +72,23 @@ class Environment {
   static Vec2d equirectFromDirection(const Vec3d& w);
   static Vec3d directionFromEquirect(const Vec2d& ut);
 
-  const Image* map() const { return map_ ? &map_->image : nullptr; }
+  bool hasMap() const { return bool(map_); }
   const Rgb& constantRadiance() const { return constant_; }
 
  private:
   struct Map {
-    Image image;
-    double strength;
+    int width = 0, height = 0;
+    std::vector<float> texels;  // per texel: R, G, B (times strength), density of its cell
     glm::dmat3 mapToWorld, worldToMap;
     PiecewiseConstant2D distribution;  // rows x columns of the image
     std::vector<double> rowCos;        // cos theta at the H + 1 row edges
+    bool black = true;                 // nothing to sample
+
+    const float* texel(int x, int y) const { return texels.data() + (size_t(y) * width + x) * 4; }
   };
 
-  Rgb lookup(const Vec2d& ut) const;  // bilinear, times strength
+  // Bilinear radiance at (u, t) and the density of the cell (u, t) lies in.
+  EnvironmentValue lookup(const Vec2d& ut) const;
 
   Rgb constant_{1.0};
   std::shared_ptr<const Map> map_;  // shared: copies of a scene's environment share one map

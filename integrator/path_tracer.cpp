@@ -13,17 +13,23 @@ constexpr double ShadowRayShortening = 1e-7;
 // Next-event estimation at one vertex: one light sample, its contribution f L |cos| / pdf,
 // weighted against BSDF sampling by the power heuristic (Mis) or in full (LightOnly).
 Rgb directLighting(const Scene& scene, const SurfaceInteraction& hit, const Bsdf& bsdf, const Vec3d& wi,
-                   SampleStream& random, Estimator estimator) {
+                   SampleStream& random, Estimator estimator, LightSet lightSet) {
   const double uSelect = random.next();
   const Vec2d u = random.next2D();
-  const std::optional<LightSample> light = scene.sampleLight(hit.point, uSelect, u);
+  const std::optional<LightSample> light = scene.sampleLight(hit.point, uSelect, u, lightSet);
   if (!light || !(light->pdf > 0)) return Rgb(0.0);
-  const Rgb f = bsdf.eval(wi, light->direction);
-  if (f == Rgb(0.0)) return Rgb(0.0);
   const Vec3d& n = hit.geometry.normal;
-  const double cosine = std::abs(glm::dot(n, light->direction));
+  const double cosLight = glm::dot(n, light->direction);
+  // A reflection-only model (two-sided) reflects nothing to the other side of the surface:
+  // skip evaluating it there (half of a uniform light sample's directions).
+  if (hit.twoSided() && cosLight * glm::dot(n, wi) <= 0) return Rgb(0.0);
+  // Occlusion before the BSDF: for analytic shapes a shadow ray is cheaper than evaluating a
+  // rough dielectric, and from inside a closed glass sphere every shadow ray is blocked.
   const double tMax = light->distance == Infinity ? Infinity : light->distance * (1.0 - ShadowRayShortening);
   if (scene.occluded(spawnRay(hit.point, n, light->direction), tMax)) return Rgb(0.0);
+  const Rgb f = bsdf.eval(wi, light->direction);
+  if (f == Rgb(0.0)) return Rgb(0.0);
+  const double cosine = std::abs(cosLight);
   const double weight = light->isDelta || estimator != Estimator::Mis
                             ? 1.0
                             : powerHeuristic(light->pdf, bsdf.pdf(wi, light->direction));
@@ -45,6 +51,8 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
   double bsdfPdf = 0.0;
   Vec3d origin = ray.origin;
   const Estimator estimator = settings.estimator;
+  const LightSet lightSet = estimator == Estimator::Mis ? LightSet::MisSampled : LightSet::All;
+  const bool nextEvent = estimator != Estimator::BsdfOnly && scene.lightCount(lightSet) > 0;
   // The weight of emission that the current ray finds, given the density with which NEE
   // would have sampled it.
   const auto emissionWeight = [&](double lightPdf) {
@@ -56,21 +64,21 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
   for (int bounce = 0;; ++bounce) {
     const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
-      out.radiance += throughput * scene.escapedRadiance(ray.direction, emissionWeight);
+      out.radiance += throughput * scene.escapedRadiance(ray.direction, emissionWeight, lightSet);
       break;
     }
     ++out.vertices;
     const Vec3d wi = -ray.direction;
     if (hit->light >= 0) {
       const Rgb emitted = scene.emitted(*hit, wi);
-      if (emitted != Rgb(0.0)) out.radiance += throughput * emitted * emissionWeight(scene.emittedPdf(*hit, origin));
+      if (emitted != Rgb(0.0)) out.radiance += throughput * emitted * emissionWeight(scene.emittedPdf(*hit, origin, lightSet));
     }
     if (bounce == 0) out.normal = hit->geometry.normal;
     if (bounce >= settings.maxDepth) break;
 
     const Bsdf bsdf = hit->bsdf();
-    if (estimator != Estimator::BsdfOnly && hasAny(bsdf.flags(), NonDelta))
-      out.radiance += throughput * directLighting(scene, *hit, bsdf, wi, random, estimator);
+    if (nextEvent && hasAny(bsdf.flags(), NonDelta))
+      out.radiance += throughput * directLighting(scene, *hit, bsdf, wi, random, estimator, lightSet);
 
     const double uLobe = random.next();
     const Vec2d u = random.next2D();

@@ -5,7 +5,8 @@
 // smooth glass) skip NEE and count the emission they find in full. A transmissive model sees
 // the side of wi as inside or outside (Bsdf(..., twoSided = false)), so the interior of a
 // dielectric sphere needs no bookkeeping beyond the model's own. The camera path carries
-// radiance (TransportMode::Radiance).
+// radiance (TransportMode::Radiance). Under MIS a constant environment is found by BSDF
+// sampling alone (scene.h, LightSet).
 //
 // Depth: `maxDepth` scattering events (bounces) at most, as Cycles' max_bounces; emission
 // reached after the last bounce still counts. Russian roulette from `rouletteDepth` bounces on,

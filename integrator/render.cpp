@@ -26,18 +26,28 @@ void checkSettings(const PinholeCamera& camera, const RenderSettings& settings) 
   if (settings.threads < 0) fail("negative thread count");
 }
 
-// Per-pixel accumulation: Welford's running mean and sum of squared deviations (Welford 1962),
-// exact order of samples fixed, so the result does not depend on scheduling.
+// Per-pixel accumulation: sums of the samples and of their squares shifted by the first sample
+// (the "shifted data" algorithm, Chan, Golub & LeVeque 1983, "Algorithms for computing the
+// sample variance", Am. Stat. 37(3)): no division per sample, and no cancellation when the
+// spread is small against the mean. The order of samples is fixed, so the result does not
+// depend on scheduling.
 struct PixelAccumulator {
-  Rgb mean{0.0}, m2{0.0}, albedo{0.0};
+  Rgb shift{0.0}, sum{0.0}, sumSquares{0.0}, albedo{0.0};
   Vec3d normal{0.0};
   uint64_t count = 0;
 
   void add(const Rgb& value) {
-    ++count;
-    const Rgb delta = value - mean;
-    mean += delta / double(count);
-    m2 += delta * (value - mean);
+    if (count++ == 0) shift = value;
+    const Rgb d = value - shift;
+    sum += d;
+    sumSquares += d * d;
+  }
+  Rgb mean() const { return shift + sum / double(count); }
+  // The unbiased sample variance divided by n: the variance of the mean.
+  Rgb varianceOfMean() const {
+    if (count < 2) return Rgb(0.0);
+    const double n = double(count);
+    return glm::max(sumSquares - sum * sum / n, Rgb(0.0)) / (n * (n - 1.0));
   }
 };
 
@@ -81,11 +91,10 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const st
             acc.add(Rgb(0.0));
           }
         }
-        result.color.setRgb(x, y, acc.mean);
+        result.color.setRgb(x, y, acc.mean());
         if (settings.albedoLayer) result.albedo.setRgb(x, y, acc.albedo / double(spp));
         if (settings.normalLayer) result.normal.setRgb(x, y, acc.normal / double(spp));
-        if (settings.varianceLayer)
-          result.variance.setRgb(x, y, spp > 1 ? acc.m2 / (double(spp) * double(spp - 1)) : Rgb(0.0));
+        if (settings.varianceLayer) result.variance.setRgb(x, y, acc.varianceOfMean());
       }
     vertices += tileVertices;
     nonFinite += tileNonFinite;

@@ -90,9 +90,19 @@ void Scene::setEnvironment(Environment environment) {
 
 void Scene::rebuildLightList() {
   lights_.clear();
-  if (environment_) lights_.push_back({LightKind::Environment, 0});
-  for (int i = 0; i < int(sphereLights_.size()); ++i) lights_.push_back({LightKind::Sphere, i});
-  for (int i = 0; i < int(suns_.size()); ++i) lights_.push_back({LightKind::Sun, i});
+  misLights_.clear();
+  if (environment_) {
+    lights_.push_back({LightKind::Environment, 0});
+    if (environment_->hasMap()) misLights_.push_back({LightKind::Environment, 0});
+  }
+  for (int i = 0; i < int(sphereLights_.size()); ++i) {
+    lights_.push_back({LightKind::Sphere, i});
+    misLights_.push_back({LightKind::Sphere, i});
+  }
+  for (int i = 0; i < int(suns_.size()); ++i) {
+    lights_.push_back({LightKind::Sun, i});
+    misLights_.push_back({LightKind::Sun, i});
+  }
 }
 
 const BsdfModel* Scene::modelAt(int material, const Vec2d& uv) const {
@@ -158,10 +168,11 @@ double Scene::intersectShape(int shape, const Ray& ray, double tMin, double tMax
                       : planes_[ref.index].geometry.intersect(ray, tMin, tMax);
 }
 
-std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, const Vec2d& u) const {
-  if (lights_.empty()) return std::nullopt;
-  const int count = int(lights_.size());
-  const LightRef& light = lights_[std::min(int(uSelect * count), count - 1)];
+std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, const Vec2d& u, LightSet set) const {
+  const std::vector<LightRef>& candidates = lights(set);
+  if (candidates.empty()) return std::nullopt;
+  const int count = int(candidates.size());
+  const LightRef& light = candidates[std::min(int(uSelect * count), count - 1)];
   std::optional<LightSample> sample;
   switch (light.kind) {
     case LightKind::Environment:
@@ -180,9 +191,9 @@ Rgb Scene::emitted(const SurfaceInteraction& hit, const Vec3d& toward) const {
   return sphereLights_[hit.light].radiance;
 }
 
-double Scene::emittedPdf(const SurfaceInteraction& hit, const Vec3d& from) const {
+double Scene::emittedPdf(const SurfaceInteraction& hit, const Vec3d& from, LightSet set) const {
   if (hit.light < 0) return 0.0;
-  return lightSelectionProbability() * sphereLights_[hit.light].pdf(from);
+  return lightSelectionProbability(set) * sphereLights_[hit.light].pdf(from);
 }
 
 }  // namespace scatterlab

@@ -42,13 +42,27 @@ struct SurfaceInteraction {
 
   // True when the model must not be mirrored to the front side (it has transmission).
   bool twoSided() const { return !hasAny(model->flags(), LobeFlags::Transmission); }
+  // The shading frame: the shape's tangent is already orthogonal to the normal and of unit
+  // length where it exists (shapes.h), so it is used as it is.
   Bsdf bsdf() const {
-    return Bsdf(*model, Framed::fromNormalTangent(geometry.normal, geometry.tangent), twoSided());
+    const Framed frame = geometry.tangent == Vec3d(0.0)
+                             ? Framed::fromNormal(geometry.normal)
+                             : Framed(geometry.tangent, glm::cross(geometry.normal, geometry.tangent), geometry.normal);
+    return Bsdf(*model, frame, twoSided());
   }
 };
 
 // One kind of light, as next-event estimation chooses among them.
 enum class LightKind { Environment, Sphere, Sun };
+
+// Which lights next-event estimation samples. `All` of them (for the light-only estimator),
+// or those worth sampling under MIS: there a constant environment is left to BSDF sampling
+// alone and its light density counts as 0 in the MIS weights, which stay a partition of
+// unity. BSDF sampling already follows f |cos| under a constant radiance (for a Lambertian
+// surface the estimate is exact), so sampling that light too only adds work and variance
+// (pbrt-v4 does the same for its UniformInfiniteLight; Karlik, Sik, Vevoda, Skrivan &
+// Krivanek 2019, "MIS Compensation", give the general argument).
+enum class LightSet { All, MisSampled };
 
 class Scene {
  public:
@@ -85,28 +99,36 @@ class Scene {
   // of a subsurface material search one object this way.
   double intersectShape(int shape, const Ray& ray, double tMin, double tMax) const;
 
-  // ---- Lights, for next-event estimation: one light chosen uniformly, then sampled.
-  int lightCount() const { return int(lights_.size()); }
-  double lightSelectionProbability() const { return lights_.empty() ? 0.0 : 1.0 / double(lights_.size()); }
+  // ---- Lights, for next-event estimation: one light of the set chosen uniformly, then sampled.
+  int lightCount(LightSet set = LightSet::All) const { return int(lights(set).size()); }
+  double lightSelectionProbability(LightSet set = LightSet::All) const {
+    return lights(set).empty() ? 0.0 : 1.0 / double(lights(set).size());
+  }
   // A light sample for the shading point p; its pdf includes the selection probability.
-  std::optional<LightSample> sampleLight(const Vec3d& p, double uSelect, const Vec2d& u) const;
+  std::optional<LightSample> sampleLight(const Vec3d& p, double uSelect, const Vec2d& u,
+                                         LightSet set = LightSet::All) const;
 
   // The radiance a ray escaping along `direction` receives from the lights at infinity, each
   // light's share multiplied by weight(pdf) with pdf the density (selection included) with
-  // which next-event estimation would have sampled that light in this direction.
-  template <typename Weight> Rgb escapedRadiance(const Vec3d& direction, const Weight& weight) const {
-    const double select = lightSelectionProbability();
+  // which next-event estimation of `set` would have sampled that light in this direction.
+  template <typename Weight>
+  Rgb escapedRadiance(const Vec3d& direction, const Weight& weight, LightSet set = LightSet::All) const {
+    const double select = lightSelectionProbability(set);
     Rgb sum(0.0);
-    if (environment_) sum += environment_->eval(direction) * weight(select * environment_->pdf(direction));
+    if (environment_) {
+      const EnvironmentValue value = environment_->evalWithPdf(direction);
+      const bool sampled = set == LightSet::All || environment_->hasMap();
+      sum += value.radiance * weight(sampled ? select * value.pdf : 0.0);
+    }
     for (const SunLight& sun : suns_)
       if (const Rgb l = sun.eval(direction); l != Rgb(0.0)) sum += l * weight(select * sun.pdf(direction));
     return sum;
   }
   // Radiance emitted by a sphere light toward `toward` (a unit vector away from the hit) at
-  // `hit`, and the density with which next-event estimation from `from` would have sampled
-  // the light (selection included).
+  // `hit`, and the density with which next-event estimation of `set` from `from` would have
+  // sampled the light (selection included).
   Rgb emitted(const SurfaceInteraction& hit, const Vec3d& toward) const;
-  double emittedPdf(const SurfaceInteraction& hit, const Vec3d& from) const;
+  double emittedPdf(const SurfaceInteraction& hit, const Vec3d& from, LightSet set = LightSet::All) const;
 
  private:
   struct SceneSphere {
@@ -129,6 +151,7 @@ class Scene {
     int index;
   };
 
+  const std::vector<LightRef>& lights(LightSet set) const { return set == LightSet::All ? lights_ : misLights_; }
   int addShape(bool isSphere, int index);
   const BsdfModel* modelAt(int material, const Vec2d& uv) const;
   void checkMaterial(int material) const;
@@ -142,7 +165,7 @@ class Scene {
   std::vector<SphereLight> sphereLights_;
   std::vector<SunLight> suns_;
   std::optional<Environment> environment_;
-  std::vector<LightRef> lights_;
+  std::vector<LightRef> lights_, misLights_;
   PinholeCamera camera_;
   int blackMaterial_ = -1;
 };

@@ -45,11 +45,15 @@ struct Sphere {
     return Infinity;
   }
 
+  // The normal is normalised, not just divided by the radius: a hit point is on the sphere
+  // only to round-off, and a frame built on a normal of length 1 + e reflects rays that are
+  // 1 + e long, whose next hit is off by more again. A ray caught between near-critical
+  // internal reflections in a glass sphere (dozens of bounces) would drift off the surface.
   SurfaceGeometry geometryAt(const Vec3d& point) const {
     const Vec3d n = glm::normalize(point - center);
     const Vec3d around = glm::cross(axis, n);  // d point / d phi
-    const double length = glm::length(around);
-    return {n, length > 1e-12 ? around / length : Vec3d(0.0)};
+    const double length2 = glm::dot(around, around);
+    return {n, length2 > 1e-24 ? around * (1.0 / std::sqrt(length2)) : Vec3d(0.0)};
   }
 
   // (phi / 2 pi, theta / pi) about the axis, in [0, 1]^2.

@@ -68,7 +68,8 @@ TEST(Environment, SamplesAgreeWithEvalAndPdf) {
 }
 
 // The density integrates to 1 over the sphere: the midpoint sum over a grid 8 times finer than
-// the map's pixels (pdf is constant on each pixel's cell, so the sum is exact up to round-off).
+// the map's pixels (pdf is constant on each pixel's cell, so the sum is exact up to round-off;
+// the densities are stored as floats beside the texels, relative rounding <= 2^-24 each).
 TEST(Environment, PdfIntegratesToOne) {
   const Environment env = Environment::fromMap(patchyMap(16));
   const int rows = 128, columns = 256;
@@ -80,7 +81,7 @@ TEST(Environment, PdfIntegratesToOne) {
       sum += env.pdf(Environment::directionFromEquirect({u, t})) * band;
     }
   }
-  EXPECT_NEAR(sum, 1.0, 1e-12);
+  EXPECT_NEAR(sum, 1.0, 1e-7);
 }
 
 TEST(Environment, PdfIsPositiveWhereverRadianceIs) {

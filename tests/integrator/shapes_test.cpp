@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "integrator/shapes.h"
+#include "materials/core/frame.h"
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
 
@@ -84,6 +85,26 @@ TEST(SpawnRay, NeverFindsItsOwnSurface) {
     }
   }
   EXPECT_GT(inward, 9000);
+}
+
+// A ray trapped in a sphere by total internal reflection (the "whispering gallery" of grazing
+// entries into glass) bounces hundreds of times; each bounce starts from the last hit, so the
+// hits must stay on the surface instead of drifting off it by a growing error.
+TEST(SpawnRay, InternalReflectionsStayOnTheSphere) {
+  const Sphere sphere{Vec3d(0.1, 0.2, -0.3), 1.0};
+  Ray ray{sphere.center, glm::normalize(Vec3d(0.3, 1.0, 0.2))};
+  ray.origin = sphere.center + glm::normalize(Vec3d(1.0, -0.2, 0.4)) * 0.999;  // near the wall
+  ray.direction = glm::normalize(glm::cross(ray.origin - sphere.center, Vec3d(0, 0, 1)) + 0.6 * (sphere.center - ray.origin));
+  for (int bounce = 0; bounce < 1000; ++bounce) {
+    const double t = sphere.intersect(ray, 0.0, Infinity);
+    ASSERT_LT(t, Infinity) << "escaped at bounce " << bounce;
+    const Vec3d p = ray.at(t);
+    ASSERT_NEAR(glm::length(p - sphere.center), 1.0, 1e-12) << "bounce " << bounce;
+    const SurfaceGeometry g = sphere.geometryAt(p);
+    const Framed frame(g.tangent, glm::cross(g.normal, g.tangent), g.normal);
+    const Vec3d local = frame.toLocal(-ray.direction);
+    ray = spawnRay(p, g.normal, frame.toWorld(Vec3d(-local.x, -local.y, local.z)));  // mirror, inward
+  }
 }
 
 }  // namespace
