@@ -11,7 +11,7 @@
 // distribution (materials/core/piecewise_constant_2d.h) proportional to the luminance of the
 // bilinear radiance integrated over the cell times the cell's solid angle, then a direction
 // uniform in the cell's solid angle (phi uniform, cos theta uniform in the row's band). The
-// density is therefore constant over each cell,
+// density is therefore constant over each cell (stored in float beside the texel, below),
 //   pdf(w) = P(r, c) / (dphi (cos theta_r - cos theta_{r+1})),   dphi = 2 pi / W,
 // bounded at the poles (no 1 / sin theta), and positive wherever the bilinear radiance is: the
 // integral over a cell weighs the 3 x 3 pixels around it with (1/8, 3/4, 1/8)^2 > 0, and those
@@ -25,7 +25,7 @@
 
 #include <memory>
 #include <optional>
-#include <string>
+#include <vector>
 
 #include "integrator/image.h"
 #include "integrator/transform.h"
@@ -58,7 +58,6 @@ class Environment {
   // and names the offending pixel), scaled by `strength`, turned by `mapToWorld` (a rotation).
   static Environment fromMap(Image map, double strength = 1.0, const Transform& mapToWorld = Transform());
 
-  bool isConstant() const { return !map_; }
   // Radiance arriving from `direction` (world, unit): what a ray escaping along it sees.
   Rgb eval(const Vec3d& direction) const;
   // eval and pdf together, sharing the direction's lookup.
@@ -72,8 +71,8 @@ class Environment {
   static Vec2d equirectFromDirection(const Vec3d& w);
   static Vec3d directionFromEquirect(const Vec2d& ut);
 
+  // False for a constant environment.
   bool hasMap() const { return bool(map_); }
-  const Rgb& constantRadiance() const { return constant_; }
 
  private:
   struct Map {

@@ -37,7 +37,6 @@ class Transform {
   Vec3d normal(const Vec3d& n) const { return Vec3d(glm::transpose(inverse_) * glm::dvec4(n, 0.0)); }
 
   const glm::dmat4& matrix() const { return matrix_; }
-  const glm::dmat4& inverseMatrix() const { return inverse_; }
   // The linear part (rotation, scale) as a 3x3 matrix.
   glm::dmat3 linear() const { return glm::dmat3(matrix_); }
 

@@ -94,6 +94,4 @@ inline double zScore(double a, double varianceA, double b, double varianceB) {
   return variance > 0 ? (a - b) / std::sqrt(variance) : (a == b ? 0.0 : std::copysign(INFINITY, a - b));
 }
 
-inline double channelMean(const Rgb& v) { return (v.x + v.y + v.z) / 3.0; }
-
 }  // namespace scatterlab::render_test
