@@ -1,5 +1,6 @@
 #include "app/check_command.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -16,8 +17,10 @@
 #include "app/progress.h"
 #include "app/showcase.h"
 #include "materials/bsdf/registry.h"
+#include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
 #include "validation/negative_controls.h"
+#include "validation/subsurface_check.h"
 
 namespace scatterlab {
 
@@ -34,7 +37,8 @@ constexpr uint64_t MaxSamples = 100'000'000'000;
 struct MaterialUnderTest {
   std::string label;  // names the material's rows and its image files
   json completed;
-  std::unique_ptr<BsdfModel> model;
+  std::unique_ptr<BsdfModel> model;  // a BSDF, or
+  std::optional<SubsurfaceMaterial> subsurface;
   // With --negative-controls, for models that have a roughness.
   std::unique_ptr<BsdfModel> roughnessMismatchSampler;
 };
@@ -45,7 +49,9 @@ std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const json& material) {
 }
 
 MaterialUnderTest prepareMaterial(std::string label, const json& material, bool negativeControls) {
-  MaterialUnderTest prepared{std::move(label), completeMaterial(material), makeBsdf(material), nullptr};
+  if (isSubsurfaceMaterial(material))
+    return {std::move(label), completeMaterial(material), nullptr, makeSubsurface(material), nullptr};
+  MaterialUnderTest prepared{std::move(label), completeMaterial(material), makeBsdf(material), std::nullopt, nullptr};
   if (negativeControls) prepared.roughnessMismatchSampler = makeRoughnessMismatchSampler(material);
   return prepared;
 }
@@ -92,8 +98,32 @@ void createImageDirectory(const std::filesystem::path& directory) {
                      "); allowed: a directory, or a path where one can be created");
 }
 
+// The subsurface kit on the same options: --grid R x C gives R radius bins and R/2 x C/4 probe
+// cells (64 and 32 x 32 by default).
+SubsurfaceCheckOptions subsurfaceOptions(const BsdfCheckOptions& kit) {
+  SubsurfaceCheckOptions options;
+  options.samples = kit.samples;
+  options.radiusBins = kit.thetaBins;
+  options.probeRings = std::max(kit.thetaBins / 2, 2);
+  options.probeSectors = std::max(kit.phiBins / 4, 2);
+  options.seed = kit.seed;
+  options.alpha = kit.alpha;
+  options.chiSquareTestCount = kit.chiSquareTestCount;
+  options.imageDir = kit.imageDir;
+  options.imagesOnFailureOnly = kit.imagesOnFailureOnly;
+  return options;
+}
+
 CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOptions& kit, bool negativeControls,
                           const ProgressCallback& progress) {
+  if (material.subsurface) {
+    CheckReport report =
+        runSubsurfaceChecks(material.subsurface->bssrdf(), material.label, subsurfaceOptions(kit), progress);
+    if (negativeControls)
+      report.append(
+          runSubsurfaceNegativeControls(*material.subsurface->profile, material.label, subsurfaceOptions(kit), progress));
+    return report;
+  }
   CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
   if (negativeControls)
     report.append(
@@ -115,8 +145,8 @@ json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit
 
 // A measured table's missing cells (negative in the file), which the fill rule of
 // tabulated_brdf.h replaces; nothing for other models.
-std::optional<size_t> missingCellsOf(const BsdfModel& model) {
-  const auto* table = dynamic_cast<const TabulatedBrdf*>(&model);
+std::optional<size_t> missingCellsOf(const BsdfModel* model) {
+  const auto* table = dynamic_cast<const TabulatedBrdf*>(model);
   return table ? std::optional<size_t>(table->missingCells()) : std::nullopt;
 }
 
@@ -125,7 +155,7 @@ void printJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit,
   json materialsJson = json::array();
   for (const MaterialUnderTest& material : materials) {
     materialsJson.push_back({{"label", material.label}, {"material", material.completed}});
-    if (const auto missing = missingCellsOf(*material.model)) materialsJson.back()["missing_cells"] = *missing;
+    if (const auto missing = missingCellsOf(material.model.get())) materialsJson.back()["missing_cells"] = *missing;
   }
   const json document{{"options", optionsJson(options, kit)},
                       {"materials", std::move(materialsJson)},
@@ -138,7 +168,7 @@ void printText(const std::vector<MaterialUnderTest>& materials, const CheckRepor
   std::cout << "materials (every default filled in):\n";
   for (const MaterialUnderTest& material : materials) {
     std::cout << "  " << material.label << " = " << material.completed.dump() << "\n";
-    if (const auto missing = missingCellsOf(*material.model); missing && *missing > 0)
+    if (const auto missing = missingCellsOf(material.model.get()); missing && *missing > 0)
       std::cout << "    " << *missing << " of " << merl::CellCount
                 << " cells missing in the file, filled from the nearest measured cell along theta_d\n";
   }
@@ -207,7 +237,10 @@ int runCheckCommand(const CheckCommandOptions& options) {
   const std::vector<MaterialUnderTest> materials = prepareMaterials(options);
 
   BsdfCheckOptions kit = options.kit;
-  kit.chiSquareTestCount = chiSquareTestCount(kit) * static_cast<int>(materials.size());
+  kit.chiSquareTestCount = 0;
+  for (const MaterialUnderTest& material : materials)
+    kit.chiSquareTestCount +=
+        material.subsurface ? subsurfaceChiSquareTestCount(*material.subsurface->profile) : chiSquareTestCount(kit);
   if (kit.imageDir) createImageDirectory(*kit.imageDir);
 
   CheckReport report;

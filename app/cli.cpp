@@ -6,8 +6,10 @@
 
 #include "app/check_command.h"
 #include "app/exit_code.h"
+#include "app/fit_command.h"
 #include "app/generate_table_command.h"
 #include "app/models_command.h"
+#include "app/profile_command.h"
 #include "app/render_command.h"
 #include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
@@ -45,6 +47,10 @@ int runCli(int argc, char** argv) {
   const CLI::App* check = addCheckCommand(app, checkOptions);
   SynthCommandOptions synthOptions;
   const CLI::App* synth = addSynthCommand(app, synthOptions);
+  ProfileCommandOptions profileOptions;
+  const CLI::App* profile = addProfileCommand(app, profileOptions);
+  FitCommandOptions fitOptions;
+  const CLI::App* fit = addFitCommand(app, fitOptions);
   RenderCommandOptions renderOptions;
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
 
@@ -58,6 +64,8 @@ int runCli(int argc, char** argv) {
     if (*check) return runCheckCommand(checkOptions);
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);
     if (*synth) return runSynthCommand(synthOptions);
+    if (*profile) return runProfileCommand(profileOptions);
+    if (*fit) return runFitCommand(fitOptions);
     if (*renderCommand) return runRenderCommand(renderOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {

@@ -1,9 +1,13 @@
 #include "app/option_values.h"
 
+#include <algorithm>
+
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <optional>
+
+#include "app/exit_code.h"
 
 namespace scatterlab {
 
@@ -93,6 +97,27 @@ CLI::Validator outputDirectoryValidator() {
         return "";
       },
       "");
+}
+
+CLI::Validator choiceOf(const std::vector<std::string>& names, const std::string& what) {
+  std::string allowed = "one of ";
+  for (size_t i = 0; i < names.size(); ++i) allowed += (i ? ", " : "") + inQuotes(names[i]);
+  return CLI::Validator(
+      [names, what, allowed](std::string& text) -> std::string {
+        if (std::find(names.begin(), names.end(), text) != names.end()) return "";
+        return inQuotes(text) + " is not " + what + "; allowed: " + allowed;
+      },
+      "");
+}
+
+void checkOutputFile(const std::string& option, const std::string& path, const std::string& example) {
+  const std::string allowed = "; allowed: a file path in an existing directory, e.g. " + example;
+  if (path.empty()) throw InputError(option + ": missing" + allowed);
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(option + ": " + inQuotes(path) + " is a directory" + allowed);
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  if (!directory.empty() && !std::filesystem::is_directory(directory, error))
+    throw InputError(option + ": directory " + inQuotes(directory.string()) + " does not exist" + allowed);
 }
 
 }  // namespace scatterlab

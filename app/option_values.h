@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -35,5 +36,12 @@ CLI::Validator gridValidator();
 // A directory that may not exist yet (it is created once every input is valid), but is not
 // an existing file.
 CLI::Validator outputDirectoryValidator();
+
+// One of `names`; `what` names the kind in messages ("a metric").
+CLI::Validator choiceOf(const std::vector<std::string>& names, const std::string& what);
+
+// An output file to write: not empty, not a directory, in a directory that exists; throws
+// InputError naming `option` otherwise. `example` ends the message ("gold.binary").
+void checkOutputFile(const std::string& option, const std::string& path, const std::string& example);
 
 }  // namespace scatterlab

@@ -105,17 +105,6 @@ json perturbationJson(const MeasurementPerturbation& p) {
           {"missing_above_deg", p.missingAboveDeg ? json(*p.missingAboveDeg) : json()}};
 }
 
-// An output file whose directory exists and that is not a directory itself.
-void checkOutputFile(const std::string& out) {
-  const std::string allowed = "; allowed: a file path in an existing directory, e.g. gold.binary";
-  if (out.empty()) throw InputError("--out: missing" + allowed);
-  std::error_code error;
-  if (fs::is_directory(out, error)) throw InputError("--out: " + inQuotes(out) + " is a directory" + allowed);
-  const fs::path directory = fs::path(out).parent_path();
-  if (!directory.empty() && !fs::is_directory(directory, error))
-    throw InputError("--out: directory " + inQuotes(directory.string()) + " does not exist" + allowed);
-}
-
 // Synthesises, writes atomically, and returns what --json reports.
 json synthesizeAndWrite(const GroundTruth& truth, const MeasurementPerturbation& perturbation, const fs::path& out,
                         int threads, ProgressLine& progress, const std::string& step) {
@@ -297,7 +286,7 @@ int runSynthCommand(const SynthCommandOptions& options) {
     if (!options.out.empty()) throw InputError("--out: not used with --bundle (the bundle names its files)");
     return runBundle(options, perturbation);
   }
-  checkOutputFile(options.out);
+  checkOutputFile("--out", options.out, "gold.binary");
   const GroundTruth truth =
       options.fitFile.empty() ? fromMaterialArgument(options.material) : fromFitFile(options.fitFile, options.fitName);
   json entry;

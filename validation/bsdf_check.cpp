@@ -5,13 +5,10 @@
 #include <fstream>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
-#include "materials/core/atomic_file.h"
 #include "validation/bsdf_sampling.h"
+#include "validation/chi_square_images.h"
 #include "validation/consistency.h"
 #include "validation/energy.h"
-#include "validation/heatmap.h"
 #include "validation/negative_controls.h"
 #include "validation/reciprocity.h"
 #include "validation/transport_modes.h"
@@ -35,10 +32,7 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0) {
 }
 
 std::string fileStem(const std::string& label, double wiTheta) {
-  std::string s;
-  for (char c : label) s += (std::isalnum((unsigned char)c) || c == '-' || c == '_' || c == '.') ? c : '_';
-  if (s.size() > 80) s.resize(80);
-  return s + "_wi" + format("%g", wiTheta);
+  return safeFileStem(label) + "_wi" + format("%g", wiTheta);
 }
 
 CheckRow makeRow(const std::string& label, const std::string& test, double wiTheta, double statistic, double threshold,
@@ -60,32 +54,6 @@ CheckRow chiSquareRow(const std::string& label, const std::string& test, double 
   row.dof = r.dof;
   row.pValue = r.pValue;
   return row;
-}
-
-void writeImages(const std::filesystem::path& dir, const std::string& stem, const ChiSquareResult& chi,
-                 const ConsistencyResult* consistency) {
-  std::filesystem::create_directories(dir);
-  double peak = 0;
-  for (size_t i = 0; i < chi.observed.values.size(); ++i)
-    peak = std::max({peak, chi.observed.values[i], chi.expected.values[i]});
-  writeHeatmapPng(dir / (stem + "_observed.png"), chi.observed, HeatmapScale::Sequential, peak);
-  writeHeatmapPng(dir / (stem + "_expected.png"), chi.expected, HeatmapScale::Sequential, peak);
-  Table2D residual(chi.observed.rows, chi.observed.cols);
-  for (size_t i = 0; i < residual.values.size(); ++i) {
-    const double e = chi.expected.values[i], o = chi.observed.values[i];
-    residual.values[i] = e > 0 ? (o - e) / std::sqrt(e) : (o > 0 ? INFINITY : 0.0);
-  }
-  writeHeatmapPng(dir / (stem + "_residual.png"), residual, HeatmapScale::Diverging, 5.0);
-  nlohmann::json tables = {{"rows", chi.observed.rows}, {"cols", chi.observed.cols},
-                           {"layout", "row-major; rows: cos(theta) from -1 to 1; cols: phi from -pi to pi"},
-                           {"observed", chi.observed.values}, {"expected", chi.expected.values}};
-  if (consistency) {
-    // Scale: the tolerance sits a tenth of the way up, so any failing cell is bright.
-    writeHeatmapPng(dir / (stem + "_consistency.png"), consistency->maxErrorPerCell, HeatmapScale::Sequential,
-                    10.0 * ConsistencyTolerance);
-    tables["consistency_max_error"] = consistency->maxErrorPerCell.values;
-  }
-  writeTextFileAtomically(dir / (stem + "_tables.json"), tables.dump());
 }
 
 double perTestThreshold(const BsdfCheckOptions& options, int runCount) {
@@ -188,7 +156,9 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
   }
 
   if (options.imageDir && (!options.imagesOnFailureOnly || !report.passed()))
-    writeImages(*options.imageDir, fileStem(label, wiTheta), chi, &consistency);
+    writeChiSquareImages(*options.imageDir, fileStem(label, wiTheta), chi,
+                         "row-major; rows: cos(theta) from -1 to 1; cols: phi from -pi to pi",
+                         &consistency.maxErrorPerCell, ConsistencyTolerance);
   return report;
 }
 

@@ -12,6 +12,12 @@ bool CheckReport::passed() const {
   return true;
 }
 
+const CheckRow* CheckReport::find(const std::string& test, double wiThetaDeg) const {
+  for (const CheckRow& row : rows)
+    if (row.test == test && row.wiThetaDeg && *row.wiThetaDeg == wiThetaDeg) return &row;
+  return nullptr;
+}
+
 std::string formatTable(const CheckReport& report) {
   std::string out;
   char line[512];

@@ -27,6 +27,8 @@ struct CheckRow {
 struct CheckReport {
   std::vector<CheckRow> rows;
   bool passed() const;
+  // The row of one test at one incident angle; null when the report has none.
+  const CheckRow* find(const std::string& test, double wiThetaDeg) const;
   void append(const CheckReport& other) { rows.insert(rows.end(), other.rows.begin(), other.rows.end()); }
 };
 

@@ -97,11 +97,6 @@ template <typename T> std::array<T, 2> disneySpecularAlpha(const T& roughness, c
   return {alphaX > minimum ? alphaX : minimum, alphaY > minimum ? alphaY : minimum};
 }
 
-// glm::vec of ceres::Jet cannot be copied (its anonymous unions hold a type with a non-trivial
-// copy), so the kernels build every vector as a new value, never copying a named one: this
-// rebuilds one from its components.
-template <typename T> RgbT<T> rebuiltRgb(const RgbT<T>& c) { return RgbT<T>(c.x, c.y, c.z); }
-
 template <typename T> DisneyTerms<T> disneyTerms(const DisneyParametersT<T>& p) {
   const T luminance = disneyLuminance(p.baseColor);
   // Hue and saturation only; a black base has no hue to tint with.
@@ -110,7 +105,7 @@ template <typename T> DisneyTerms<T> disneyTerms(const DisneyParametersT<T>& p) 
   const RgbT<T> dielectricF0 = T(0.08) * p.specular * (one + p.specularTint * (tint - one));
   const auto [alphaX, alphaY] = disneySpecularAlpha(p.roughness, p.anisotropic);
   const T clearcoatAlpha = T(0.1) + p.clearcoatGloss * T(0.001 - 0.1);
-  return DisneyTerms<T>{rebuiltRgb(p.baseColor),
+  return DisneyTerms<T>{p.baseColor,
                         dielectricF0 + p.metallic * (p.baseColor - dielectricF0),
                         p.sheen * (one + p.sheenTint * (tint - one)),
                         T(1) - p.metallic,

@@ -80,7 +80,6 @@ RgbT<T> eonEval(const RgbT<T>& rho, const T& r, const Vec3d& wi, const Vec3d& wo
   if (!(wi.z > 0) || !(wo.z > 0)) return RgbT<T>(T(0));
   const double s = glm::dot(wi, wo) - wi.z * wo.z;
   const double sOverT = s > 0 ? s / std::max(wi.z, wo.z) : s;
-  // Returned as expressions: glm vectors of Jets cannot be copied (union members), only built.
   const T singleFactor = T(InvPi) * eon::fonA(r) * (T(1) + r * T(sOverT));
   const T averageLoss = T(1) - eon::fonAverageAlbedo(r);
   if (!(averageLoss > T(0))) return rho * singleFactor;  // r = 0: Lambert, nothing lost

@@ -46,8 +46,6 @@ inline std::optional<Refraction> refract(const Vec3d& w, Vec3d n, double eta) {
 // n_i wi + n_o wo = n_i (wi + etaRel wo), turned to the upper hemisphere (microfacet normals
 // point up). For a reflection pair etaRel = 1 and this is the usual half vector. The zero
 // vector when the sum vanishes (only possible for etaRel = 1 and wo = -wi).
-// (Returned by value and never wrapped: glm::vec of ceres::Jet can be neither copied nor
-// moved, its members being in unions, so kernels only ever build vectors in place.)
 template <typename T> Vec3<T> generalizedHalfVector(const Vec3<T>& wi, const Vec3<T>& wo, const T& etaRel) {
   using std::sqrt;
   const Vec3<T> sum = wi + wo * etaRel;

@@ -27,6 +27,7 @@
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/bsdf/thin_dielectric.h"
 #include "materials/bsdf/ward.h"
+#include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
 
 namespace scatterlab {
@@ -85,28 +86,6 @@ std::vector<std::string> modelTypes() {
   std::vector<std::string> types;
   for (const MaterialModel& model : materialModels()) types.push_back(model.type);
   return types;
-}
-
-// ---------------------------------------------------------------------------------------
-// Choices backed by enums: the spec's list of strings and the build function's lookup come
-// from one table, so the two cannot drift apart.
-
-template <typename E> struct NamedChoice {
-  const char* name;
-  E value;
-};
-
-template <typename E, size_t N> std::vector<std::string> choiceNames(const std::array<NamedChoice<E>, N>& table) {
-  std::vector<std::string> names;
-  for (const auto& entry : table) names.emplace_back(entry.name);
-  return names;
-}
-
-// The spec has already checked that `name` is one of the table's names.
-template <typename E, size_t N> E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name) {
-  const auto it = std::find_if(table.begin(), table.end(), [&](const auto& entry) { return name == entry.name; });
-  if (it == table.end()) throw std::logic_error("choice \"" + std::string(name) + "\" missing from its table");
-  return it->value;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -283,17 +262,18 @@ bool isInUnchosenAlternative(const MaterialModel& model, size_t chosen, const st
   return false;
 }
 
-struct ParsedMaterial {
-  const MaterialModel* model;
-  MaterialParameters parameters;
-  json completed;  // the material as given, plus every default that applies
-};
+}  // namespace
 
-ParsedMaterial parseMaterial(const json& material) {
+void throwMaterialKeyError(std::string_view key, const json& value, std::string_view problem,
+                           std::string_view allowed) {
+  fail(key, value, problem, allowed);
+}
+
+ValidatedMaterial validateMaterial(const json& material) {
   const MaterialModel& model = modelOf(material);
   rejectUnknownKeys(material, model);
   const size_t chosen = chosenAlternative(material, model);
-  ParsedMaterial parsed{&model, {}, json{{"type", model.type}}};
+  ValidatedMaterial parsed{&model, {}, json{{"type", model.type}}};
   for (const ParameterSpec& spec : model.parameters) {
     const auto given = material.find(spec.name);
     const bool useDefault = given == material.end();
@@ -308,8 +288,11 @@ ParsedMaterial parseMaterial(const json& material) {
         spec.kind == ParameterKind::Materials ? json(std::get<std::vector<json>>(parsedValue)) : value;
     parsed.parameters.set(spec.name, std::move(parsedValue));
   }
+  if (model.completeDependent) model.completeDependent(parsed.parameters, parsed.completed);
   return parsed;
 }
+
+namespace {
 
 // ---------------------------------------------------------------------------------------
 // Reading material arguments.
@@ -1172,7 +1155,8 @@ std::span<const MaterialModel> materialModels() {
                                                  phongModel(), blinnPhongModel(), lafortuneModel(),
                                                  wardModel(), nganWardModel(), ashikhminShirleyModel(),
                                                  nganAshikhminShirleyModel(), nganCookTorranceModel(),
-                                                 disneyModel(), measuredModel()};
+                                                 disneyModel(), measuredModel(),
+                                                 subsurfaceMaterialModel()};
   return models;
 }
 
@@ -1206,6 +1190,7 @@ nlohmann::json materialCatalogJson() {
       parameters.push_back(std::move(entry));
     }
     catalog.push_back({{"type", model.type},
+                       {"kind", model.kind == MaterialKind::Bsdf ? "bsdf" : "subsurface"},
                        {"description", model.description},
                        {"citation", model.citation},
                        {"parameters", std::move(parameters)},
@@ -1215,14 +1200,17 @@ nlohmann::json materialCatalogJson() {
 }
 
 std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material) {
-  const ParsedMaterial parsed = parseMaterial(material);
+  const ValidatedMaterial parsed = validateMaterial(material);
+  if (parsed.model->kind != MaterialKind::Bsdf || !parsed.model->build)
+    fail("type", parsed.model->type, "is a subsurface material (a BSSRDF), not a BSDF",
+         "a BSDF model here; subsurface materials go to `scatterlab check` and `scatterlab profile`");
   return parsed.model->build(parsed.parameters);
 }
 
-nlohmann::json completeMaterial(const nlohmann::json& material) { return parseMaterial(material).completed; }
+nlohmann::json completeMaterial(const nlohmann::json& material) { return validateMaterial(material).completed; }
 
 std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor) {
-  ParsedMaterial parsed = parseMaterial(material);
+  ValidatedMaterial parsed = validateMaterial(material);
   const MaterialModel& model = *parsed.model;
   if (model.lobeWidthParameter.empty()) return std::nullopt;
   const ParameterSpec* width = model.findParameter(model.lobeWidthParameter);

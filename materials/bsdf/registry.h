@@ -7,6 +7,7 @@
 // its entry in registry.cpp.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <map>
 #include <memory>
@@ -100,11 +101,41 @@ class MaterialParameters {
   std::map<std::string, ParameterValue, std::less<>> values_;
 };
 
+// Choices backed by enums: the spec's list of strings and the build function's lookup come
+// from one table, so the two cannot drift apart.
+template <typename E> struct NamedChoice {
+  const char* name;
+  E value;
+};
+
+template <typename E, size_t N> std::vector<std::string> choiceNames(const std::array<NamedChoice<E>, N>& table) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.emplace_back(entry.name);
+  return names;
+}
+
+// The spec has already checked that `name` is one of the table's names.
+template <typename E, size_t N> E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name) {
+  for (const auto& entry : table)
+    if (name == entry.name) return entry.value;
+  throw std::logic_error("choice \"" + std::string(name) + "\" missing from its table");
+}
+
 using BuildBsdfFunction = std::unique_ptr<BsdfModel> (*)(const MaterialParameters&);
+// Fills defaults that depend on other parameters (a subsurface medium's index of refraction)
+// into the parameters and the completed description, and rejects combinations the spec alone
+// cannot (throws MaterialError). Runs after every parameter has been validated.
+using CompleteDependentFunction = void (*)(MaterialParameters&, nlohmann::json& completed);
+
+// What a model builds: a BSDF (makeBsdf), or a subsurface material, a BSSRDF
+// (materials/bssrdf/subsurface_registry.h, makeSubsurface). Both share the parameter specs
+// and their validation.
+enum class MaterialKind { Bsdf, Subsurface };
 
 // One registry entry.
 struct MaterialModel {
   std::string type{};
+  MaterialKind kind = MaterialKind::Bsdf;
   std::string description{};  // one line
   std::string citation{};
   std::vector<ParameterSpec> parameters{};
@@ -112,7 +143,8 @@ struct MaterialModel {
   // with "k"). A material gives at most one set, and all of it; with none given, the first
   // set's defaults apply.
   std::vector<std::vector<std::string>> alternatives{};
-  BuildBsdfFunction build = nullptr;
+  BuildBsdfFunction build = nullptr;  // Bsdf models
+  CompleteDependentFunction completeDependent = nullptr;
   // The parameter that sets the width of the model's main lobe ("alpha", "sigma", a Phong
   // "exponent"), which withScaledRoughness scales for the roughness-mismatch negative
   // control; empty for models without one. An exponent narrows the lobe as it grows:
@@ -131,7 +163,23 @@ const MaterialModel* findMaterialModel(std::string_view type);
 // min, max, min_open, max_open, choices, default, description}], alternatives}].
 nlohmann::json materialCatalogJson();
 
-// Builds the model a material describes; throws MaterialError on any invalid description.
+// A material description validated against its model's spec: the model, the parameters with
+// every default filled in, and the completed description.
+struct ValidatedMaterial {
+  const MaterialModel* model = nullptr;
+  MaterialParameters parameters;
+  nlohmann::json completed;  // the material as given, plus every default that applies
+};
+// Throws MaterialError on any invalid description (any kind of model).
+ValidatedMaterial validateMaterial(const nlohmann::json& material);
+
+// Throws the MaterialError every check of a key throws: "material key "KEY": VALUE PROBLEM;
+// allowed: ALLOWED" (for builders that check what the spec alone cannot).
+[[noreturn]] void throwMaterialKeyError(std::string_view key, const nlohmann::json& value, std::string_view problem,
+                                        std::string_view allowed);
+
+// Builds the BSDF a material describes; throws MaterialError on any invalid description, and
+// for a material that is not a BSDF (a subsurface material).
 std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material);
 
 // The same material with every default filled in (validated; throws MaterialError), so that

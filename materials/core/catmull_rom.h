@@ -1,13 +1,15 @@
-// Catmull-Rom interpolation of tables on uniform nodes: a cubic through each interval with
-// central-difference slopes, C1 across nodes, error O(h^3) for smooth data; the value is a
-// fixed linear combination of 4 (1-D) or 16 (2-D) node values.
+// Catmull-Rom interpolation of tables: a cubic through each interval with central-difference
+// slopes, C1 across nodes, error O(h^3) for smooth data; the value is a fixed linear
+// combination of 4 (1-D) or 16 (2-D) node values. On uniform nodes (catmullRom,
+// CatmullRomTable2D) and on non-uniform ones (catmullRomWeights, at the end of the file).
 //
-// Beyond the ends of a table, the missing neighbour is the quadratic through the last three
-// nodes continued one step (p[-1] = 3 p[0] - 3 p[1] + p[2]), so the end intervals keep the
-// accuracy of the interior ones.
+// On uniform nodes, beyond the ends of a table, the missing neighbour is the quadratic through
+// the last three nodes continued one step (p[-1] = 3 p[0] - 3 p[1] + p[2]), so the end
+// intervals keep the accuracy of the interior ones.
 #pragma once
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -74,5 +76,56 @@ class CatmullRomTable2D {
   int rows_ = 0, cols_ = 0;
   std::vector<double> values_;
 };
+
+}  // namespace scatterlab
+
+namespace scatterlab {
+
+// Catmull-Rom interpolation on non-uniform nodes (as pbrt-v3's CatmullRomWeights, Pharr,
+// Jakob & Humphreys, "Physically Based Rendering", 3rd ed., section 8.6.1): on [x1, x2] the
+// cubic Hermite through f1 and f2 whose end slopes are the finite differences
+// (f2 - f0) / (x2 - x0) and (f3 - f1) / (x3 - x1), one-sided (f2 - f1) / (x2 - x1) at the ends
+// of the table. The value is sum_k weight[k] f[offset + k]; weights of nodes outside the table
+// are 0. Tables interpolated this way in one coordinate and evaluated in another (a profile
+// per albedo row) stay linear in their node values.
+struct CatmullRomWeights {
+  int offset = 0;
+  double weight[4] = {0, 0, 0, 0};
+};
+
+// Needs at least 2 increasing nodes; x is clamped to [nodes.front(), nodes.back()].
+inline CatmullRomWeights catmullRomWeights(std::span<const double> nodes, double x) {
+  const int n = int(nodes.size());
+  if (n < 2) throw std::invalid_argument("catmullRomWeights needs at least two nodes");
+  x = std::clamp(x, nodes.front(), nodes.back());
+  const int i = std::clamp(int(std::upper_bound(nodes.begin(), nodes.end(), x) - nodes.begin()) - 1, 0, n - 2);
+  const double x1 = nodes[i], x2 = nodes[i + 1], width = x2 - x1;
+  const double t = (x - x1) / width, t2 = t * t, t3 = t2 * t;
+  // Hermite basis: value h00 f1 + h01 f2, slopes (in units of t) h10 m1 + h11 m2.
+  const double h00 = 2 * t3 - 3 * t2 + 1, h01 = 3 * t2 - 2 * t3, h10 = t3 - 2 * t2 + t, h11 = t3 - t2;
+  CatmullRomWeights w;
+  w.offset = i - 1;
+  w.weight[1] = h00;
+  w.weight[2] = h01;
+  // m1 = (f2 - f0) width / (x2 - x0), or f2 - f1 at the first interval.
+  if (i > 0) {
+    const double scale = width / (x2 - nodes[i - 1]);
+    w.weight[0] -= h10 * scale;
+    w.weight[2] += h10 * scale;
+  } else {
+    w.weight[1] -= h10;
+    w.weight[2] += h10;
+  }
+  // m2 = (f3 - f1) width / (x3 - x1), or f2 - f1 at the last interval.
+  if (i + 2 < n) {
+    const double scale = width / (nodes[i + 2] - x1);
+    w.weight[3] += h11 * scale;
+    w.weight[1] -= h11 * scale;
+  } else {
+    w.weight[2] += h11;
+    w.weight[1] -= h11;
+  }
+  return w;
+}
 
 }  // namespace scatterlab

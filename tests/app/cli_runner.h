@@ -84,4 +84,24 @@ inline std::string describe(const ProcessResult& run) {
   return "exit " + std::to_string(run.exitCode) + "\nstdout:\n" + run.out + "\nstderr:\n" + run.err;
 }
 
+// Command lines joined.
+inline std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+inline void expectMentions(const std::string& text, const std::vector<std::string>& fragments) {
+  for (const std::string& fragment : fragments)
+    EXPECT_NE(text.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from:\n" << text;
+}
+
+// A bad-input run: exit 2, one error message mentioning `fragments`, nothing on stdout.
+inline void expectBadInput(const std::vector<std::string>& args, const std::vector<std::string>& fragments) {
+  const ProcessResult run = runScatterlab(args);
+  EXPECT_EQ(run.exitCode, 2) << describe(run);
+  EXPECT_TRUE(run.out.empty()) << describe(run);
+  EXPECT_EQ(run.err.rfind("scatterlab: error: ", 0), 0u) << describe(run);
+  expectMentions(run.err, fragments);
+}
+
 }  // namespace scatterlab::cli_runner

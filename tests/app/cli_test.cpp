@@ -29,11 +29,6 @@ using namespace cli_runner;
 // A check that takes well under a second: few samples, a coarse grid, two angles.
 const std::vector<std::string> QuickCheck{"--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"};
 
-std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
 // ---- Help, version, models ---------------------------------------------------------------
 
 TEST(Cli, HelpOfEveryCommandExitsZero) {

@@ -156,6 +156,8 @@ TEST_F(RenderCliBadInput, SamplesAndSettings) {
 TEST_F(RenderCliBadInput, Materials) {
   expectBadInput({"render", R"({"type":"lambertian","albedo":2})", "--out", prefix.string()}, {"albedo"}, prefix);
   expectBadInput({"render", "no-such-material.json", "--out", prefix.string()}, {"no-such-material.json"}, prefix);
+  // A BSSRDF: the renderer takes BSDFs only (so far).
+  expectBadInput({"render", R"({"type":"subsurface"})", "--out", prefix.string()}, {"subsurface", "BSDF"}, prefix);
   expectBadInput({"render", WhiteLambertian, WhiteLambertian, "--label", "one", "--out", prefix.string()},
                  {"--label", "1 labels for 2 materials"}, prefix);
   expectBadInput({"render", WhiteLambertian, WhiteLambertian, "--layers", "albedo", "--out", prefix.string()},

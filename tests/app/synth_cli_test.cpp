@@ -31,26 +31,7 @@ const std::vector<std::string> Perturbed{"--log-noise",  "0.1",  "--noise-floor"
 // A check of a measured file that takes a few seconds: few samples, a coarse grid.
 const std::vector<std::string> QuickCheck{"--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"};
 
-std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
 std::string fitFile() { return (fs::path(SCATTERLAB_DATA_DIR) / "published-fits" / "ngan_cooktorrance.fit").string(); }
-
-void expectMentions(const std::string& text, const std::vector<std::string>& fragments) {
-  for (const std::string& fragment : fragments)
-    EXPECT_NE(text.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from:\n" << text;
-}
-
-// A bad-input run: exit 2, one error message mentioning `fragments`, nothing on stdout.
-void expectBadInput(const std::vector<std::string>& args, const std::vector<std::string>& fragments) {
-  const ProcessResult run = runScatterlab(args);
-  EXPECT_EQ(run.exitCode, 2) << describe(run);
-  EXPECT_TRUE(run.out.empty()) << describe(run);
-  EXPECT_EQ(run.err.rfind("scatterlab: error: ", 0), 0u) << describe(run);
-  expectMentions(run.err, fragments);
-}
 
 // ---- synth ----------------------------------------------------------------------------------
 

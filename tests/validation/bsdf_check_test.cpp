@@ -18,16 +18,10 @@ BsdfCheckOptions quickOptions() {
   return o;
 }
 
-const CheckRow* findRow(const CheckReport& r, const std::string& test, double wi) {
-  for (const CheckRow& row : r.rows)
-    if (row.test == test && row.wiThetaDeg && *row.wiThetaDeg == wi) return &row;
-  return nullptr;
-}
-
 TEST(BsdfCheck, WhiteLambertianPassesEverythingIncludingFurnace) {
   const CheckReport r = runBsdfChecks(LambertianBsdf(Rgb(1.0)), "white", quickOptions());
   EXPECT_TRUE(r.passed()) << formatTable(r);
-  const CheckRow* furnace = findRow(r, "furnace", 60);
+  const CheckRow* furnace = r.find("furnace", 60);
   ASSERT_NE(furnace, nullptr);
   EXPECT_LT(furnace->statistic, 1e-5);  // quadrature of cos/pi over the hemisphere
   // Rows: 5 or 6 checks per angle (furnace for lossless) + reciprocity.
@@ -37,10 +31,10 @@ TEST(BsdfCheck, WhiteLambertianPassesEverythingIncludingFurnace) {
 TEST(BsdfCheck, ColouredLambertianAlbedoIsItsAlbedo) {
   const CheckReport r = runBsdfChecks(LambertianBsdf(Rgb(0.25, 0.5, 0.75)), "coloured", quickOptions());
   EXPECT_TRUE(r.passed()) << formatTable(r);
-  const CheckRow* albedo = findRow(r, "albedo", 0);
+  const CheckRow* albedo = r.find("albedo", 0);
   ASSERT_NE(albedo, nullptr);
   EXPECT_NEAR(albedo->statistic, 0.75, 1e-5);
-  EXPECT_EQ(findRow(r, "furnace", 0), nullptr);
+  EXPECT_EQ(r.find("furnace", 0), nullptr);
 }
 
 TEST(BsdfCheck, MirrorPlusDiffuseMixturePassesWithDeltaLobe) {
@@ -51,9 +45,9 @@ TEST(BsdfCheck, MirrorPlusDiffuseMixturePassesWithDeltaLobe) {
 TEST(BsdfCheck, WrongWeightFailsConsistencyButNotChiSquare) {
   const CheckReport r = runBsdfChecks(testing::WrongWeightLambertian(1.01), "wrong-weight", quickOptions());
   EXPECT_FALSE(r.passed());
-  EXPECT_TRUE(findRow(r, "chi2", 60)->passed);
-  EXPECT_FALSE(findRow(r, "consistency", 60)->passed);
-  EXPECT_FALSE(findRow(r, "albedo-mc", 60)->passed);  // sampled albedo 1% above quadrature
+  EXPECT_TRUE(r.find("chi2", 60)->passed);
+  EXPECT_FALSE(r.find("consistency", 60)->passed);
+  EXPECT_FALSE(r.find("albedo-mc", 60)->passed);  // sampled albedo 1% above quadrature
 }
 
 TEST(BsdfCheck, ImagesAreWrittenOnRequest) {

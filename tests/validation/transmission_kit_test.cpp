@@ -27,12 +27,6 @@ BsdfCheckOptions quickOptions(std::vector<double> angles) {
   return o;
 }
 
-const CheckRow* findRow(const CheckReport& r, const std::string& test, double wi) {
-  for (const CheckRow& row : r.rows)
-    if (row.test == test && row.wiThetaDeg && *row.wiThetaDeg == wi) return &row;
-  return nullptr;
-}
-
 TEST(TransmissionKit, AnglesFromInsideAreAddedForTransmissionOnly) {
   const BsdfCheckOptions o = quickOptions({0, 30, 89.9, 135});
   const SmoothDielectricBsdf glass(1.5);
@@ -53,8 +47,8 @@ TEST(TransmissionKit, SmoothGlassPassesWithRowsForBothSidesAndModes) {
   for (const double wi : {20.0, 60.0, 160.0, 120.0})
     for (const char* test : {"chi2", "consistency (importance)", "consistency (radiance)", "transport modes",
                              "normalisation", "albedo", "albedo-mc", "furnace"})
-      EXPECT_NE(findRow(r, test, wi), nullptr) << test << " at " << wi;
-  EXPECT_EQ(findRow(r, "consistency", 20), nullptr);
+      EXPECT_NE(r.find(test, wi), nullptr) << test << " at " << wi;
+  EXPECT_EQ(r.find("consistency", 20), nullptr);
   std::set<std::string> tests;
   for (const CheckRow& row : r.rows)
     if (!row.wiThetaDeg) tests.insert(row.test);
@@ -68,7 +62,7 @@ TEST(TransmissionKit, SmoothGlassPassesWithRowsForBothSidesAndModes) {
 TEST(TransmissionKit, EnergyRowsUseImportanceTransport) {
   const SmoothDielectricBsdf glass(1.5);
   const CheckReport r = runBsdfChecks(glass, "glass", quickOptions({20}));
-  const CheckRow* albedo = findRow(r, "albedo", 160);
+  const CheckRow* albedo = r.find("albedo", 160);
   ASSERT_NE(albedo, nullptr);
   EXPECT_NEAR(albedo->statistic, 1.0, 1e-12);
   EXPECT_NE(albedo->note.find("importance transport"), std::string::npos);
@@ -105,10 +99,10 @@ TEST(TransmissionKit, RoughDielectricPassesAndAModeBlindOneFailsTheModeRows) {
 
   const CheckReport bad = runBsdfChecks(ModeBlindDielectric(model), "mode-blind", o);
   for (const double wi : {30.0, 150.0}) {
-    EXPECT_TRUE(findRow(bad, "chi2", wi)->passed);
-    EXPECT_TRUE(findRow(bad, "consistency (importance)", wi)->passed);
-    EXPECT_TRUE(findRow(bad, "consistency (radiance)", wi)->passed);
-    EXPECT_FALSE(findRow(bad, "transport modes", wi)->passed) << wi;
+    EXPECT_TRUE(bad.find("chi2", wi)->passed);
+    EXPECT_TRUE(bad.find("consistency (importance)", wi)->passed);
+    EXPECT_TRUE(bad.find("consistency (radiance)", wi)->passed);
+    EXPECT_FALSE(bad.find("transport modes", wi)->passed) << wi;
   }
   std::map<std::string, bool> reciprocity;
   for (const CheckRow& row : bad.rows)
@@ -146,7 +140,7 @@ TEST(TransmissionKit, NarrowRefractedLobeAtThePoleIsIntegrated) {
   o.phiBins = 32;
   const CheckReport r = runBsdfChecks(model, "eta 1.02", o);
   EXPECT_TRUE(r.passed()) << formatTable(r);
-  for (const double wi : {0.0, 180.0}) EXPECT_LT(findRow(r, "normalisation", wi)->statistic, 1e-4) << wi;
+  for (const double wi : {0.0, 180.0}) EXPECT_LT(r.find("normalisation", wi)->statistic, 1e-4) << wi;
 }
 
 // Lambertian above; below, where pdf() is 0, an eval of `tail`: 5e-324 is a lobe's far tail

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "fixed_pairs.h"
 #include "materials/bsdf/blend.h"
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/lambertian.h"
@@ -26,16 +27,6 @@ std::unique_ptr<BsdfModel> gold(double alpha) {
   return makeMicrofacetConductor(MicrofacetType::Ggx, alpha, alpha, au->eta, au->k);
 }
 
-struct FixedPair {
-  Vec3d wi, wo;
-};
-std::vector<FixedPair> fixedPairs() {
-  return {{directionFromDegrees(0, 0), directionFromDegrees(10, 180)},
-          {directionFromDegrees(30, 20), directionFromDegrees(35, 190)},
-          {directionFromDegrees(60, 0), directionFromDegrees(50, 120)},
-          {directionFromDegrees(80, 45), directionFromDegrees(75, 230)}};
-}
-
 TEST(Blend, ValueAndDensityAreTheComponentsMixed) {
   const Rgb w(0.3, 0.5, 0.9);
   const BlendBsdf blend(std::make_unique<LambertianBsdf>(Rgb(0.8, 0.6, 0.4)), gold(0.2), w);
@@ -43,7 +34,7 @@ TEST(Blend, ValueAndDensityAreTheComponentsMixed) {
   const auto b = gold(0.2);
   const double wbar = (0.3 + 0.5 + 0.9) / 3.0;
   EXPECT_DOUBLE_EQ(blend.firstProbability(), wbar);
-  for (const FixedPair& p : fixedPairs()) {
+  for (const DirectionPair& p : reflectionPairs()) {
     const Rgb fa = a.eval(p.wi, p.wo), fb = b->eval(p.wi, p.wo), f = blend.eval(p.wi, p.wo);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(f[c], w[c] * fa[c] + (1 - w[c]) * fb[c], 1e-14 * f[c]) << c;
     const double expected = wbar * a.pdf(p.wi, p.wo) + (1 - wbar) * b->pdf(p.wi, p.wo);
@@ -57,7 +48,7 @@ TEST(Blend, WeightOneOrZeroIsOneComponent) {
   const BlendBsdf onlySecond(std::make_unique<LambertianBsdf>(Rgb(0.5)), gold(0.3), Rgb(0.0));
   const LambertianBsdf lambertian(Rgb(0.5));
   const auto conductor = gold(0.3);
-  for (const FixedPair& p : fixedPairs()) {
+  for (const DirectionPair& p : reflectionPairs()) {
     EXPECT_EQ(onlyFirst.eval(p.wi, p.wo), lambertian.eval(p.wi, p.wo));
     EXPECT_EQ(onlyFirst.pdf(p.wi, p.wo), lambertian.pdf(p.wi, p.wo));
     EXPECT_EQ(onlySecond.eval(p.wi, p.wo), conductor->eval(p.wi, p.wo));

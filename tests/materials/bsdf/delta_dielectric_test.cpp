@@ -327,12 +327,6 @@ class RadianceScaleMissing final : public BsdfModel {
   SmoothDielectricBsdf model_;
 };
 
-const CheckRow* findRow(const CheckReport& report, const std::string& test, double wiTheta) {
-  for (const CheckRow& row : report.rows)
-    if (row.test == test && row.wiThetaDeg && *row.wiThetaDeg == wiTheta) return &row;
-  return nullptr;
-}
-
 // At normal incidence R = 0.04 (claimed 0.042: 10 sigma at 1e6 samples); from inside at 150
 // degrees R = 0.044; at 120 degrees from inside (total internal reflection) the claimed
 // probability exceeds 1, which is a hard failure.
@@ -344,7 +338,7 @@ TEST(DeltaDielectricControls, ClaimedProbabilityOffIsRejectedByChiSquare) {
   o.imageDir.reset();
   const CheckReport report = runBsdfChecks(broken, "claimed probability +5%", o);
   for (const double wi : o.wiThetaDeg) {
-    const CheckRow* chi = findRow(report, "chi2", wi);
+    const CheckRow* chi = report.find("chi2", wi);
     ASSERT_NE(chi, nullptr);
     EXPECT_FALSE(chi->passed) << "wi " << wi << ": " << chi->note;
   }
@@ -358,9 +352,9 @@ TEST(DeltaDielectricControls, MissingRadianceScaleIsCaughtByTheTransportModesRow
   o.imageDir.reset();
   const CheckReport report = runBsdfChecks(broken, "radiance scale missing", o);
   for (const double wi : {30.0, 150.0}) {
-    EXPECT_FALSE(findRow(report, "transport modes", wi)->passed) << "wi " << wi;
-    EXPECT_TRUE(findRow(report, "chi2", wi)->passed) << "wi " << wi;
-    EXPECT_TRUE(findRow(report, "furnace", wi)->passed) << "wi " << wi;
+    EXPECT_FALSE(report.find("transport modes", wi)->passed) << "wi " << wi;
+    EXPECT_TRUE(report.find("chi2", wi)->passed) << "wi " << wi;
+    EXPECT_TRUE(report.find("furnace", wi)->passed) << "wi " << wi;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "fixed_pairs.h"
 #include "materials/bsdf/diffuse_fresnel.h"
 #include "materials/bsdf/microfacet_albedo.h"
 #include "materials/bsdf/registry.h"
@@ -167,16 +168,6 @@ TEST(CoatingAlbedo, TableRejectsAnisotropyAndIndicesBelowOne) {
 
 // ---- The model ----------------------------------------------------------------------------
 
-struct FixedPair {
-  Vec3d wi, wo;
-};
-std::vector<FixedPair> fixedPairs() {
-  return {{directionFromDegrees(0, 0), directionFromDegrees(10, 180)},
-          {directionFromDegrees(30, 20), directionFromDegrees(35, 190)},
-          {directionFromDegrees(60, 0), directionFromDegrees(50, 120)},
-          {directionFromDegrees(80, 45), directionFromDegrees(75, 230)}};
-}
-
 // GGX D, Smith height-correlated G2 and the Fresnel term written out (Walter et al. 2007 eq.
 // 33; Heitz 2014 eq. 99 with Lambda = (sqrt(1 + alpha^2 tan^2) - 1) / 2), plus the diffuse term
 // with the coating albedos the model reports (their values are tested above).
@@ -188,7 +179,7 @@ TEST(RoughPlastic, EvalMatchesTheFormulaWrittenOut) {
     const double tan2 = (1 - w.z * w.z) / (w.z * w.z);
     return 0.5 * (std::sqrt(1 + alpha * alpha * tan2) - 1);
   };
-  for (const FixedPair& p : fixedPairs()) {
+  for (const DirectionPair& p : reflectionPairs()) {
     const Vec3d h = glm::normalize(p.wi + p.wo);
     const double tan2h = (1 - h.z * h.z) / (h.z * h.z);
     const double D = 1.0 / (Pi * alpha * alpha * std::pow(h.z, 4) * std::pow(1 + tan2h / (alpha * alpha), 2));
@@ -211,7 +202,7 @@ TEST(RoughPlastic, DiffuseTermOfASmoothCoatingIsTheSmoothPlasticOne) {
   const Rgb kd(0.5, 0.8, 1.0);
   const RoughPlasticBsdf<Beckmann> model(Beckmann(0.001, 0.001), kd, eta);
   const double fdrInt = diffuseFresnelReflectance(1.0 / eta);
-  for (const FixedPair& p : fixedPairs()) {
+  for (const DirectionPair& p : reflectionPairs()) {
     // Off the specular direction, f is the diffuse term alone.
     const Rgb f = model.eval(p.wi, p.wo);
     for (int c = 0; c < 3; ++c) {

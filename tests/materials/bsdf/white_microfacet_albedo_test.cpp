@@ -33,7 +33,7 @@ TEST(WhiteMicrofacetAlbedoTable, RegeneratedEntriesMatchTheCommittedOnes) {
   const std::vector<std::pair<int, int>> beckmannNodes{{0, 14}, {Last, 2}, {Last, LastCos}, {21, 27}};
   for (const MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {
     const auto& table = whiteAlbedoTable(type);
-    for (const auto [i, j] : type == MicrofacetType::Ggx ? ggxNodes : beckmannNodes) {
+    for (const auto& [i, j] : type == MicrofacetType::Ggx ? ggxNodes : beckmannNodes) {
       const double committed = table[size_t(i) * WhiteAlbedoGrid::CosNodes + j];
       EXPECT_NEAR(computeWhiteAlbedoNode(type, i, j), committed, GeneratorAccuracy)
           << name(type) << " node alpha " << WhiteAlbedoGrid::alphaNode(i) << " mu "
@@ -87,7 +87,7 @@ TEST(WhiteMicrofacetAlbedoTable, InterpolationIsWithinItsStatedBound) {
   const auto centre = [](int i) { return (i + 0.5) / (WhiteAlbedoGrid::AlphaNodes - 1); };
   const auto cosCentre = [](int j) { return (j + 0.5) / (WhiteAlbedoGrid::CosNodes - 1); };
   for (const MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {
-    for (const auto [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {0, 13}, {0, 30}, {30, 0}, {30, 20}, {30, 30},
+    for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {0, 13}, {0, 30}, {30, 0}, {30, 20}, {30, 30},
                                                               {6, 28}, {14, 12}}) {
       const double alpha = WhiteAlbedoGrid::alphaAt(centre(i));
       const double mu = WhiteAlbedoGrid::cosAt(cosCentre(j), alpha);

@@ -1,0 +1,289 @@
+#include "app/fit_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_code.h"
+#include "app/option_values.h"
+#include "app/progress.h"
+#include "app/synth_command.h"
+#include "fitting/brdf_fit.h"
+#include "fitting/material_writer.h"
+#include "materials/bsdf/registry.h"
+#include "materials/core/atomic_file.h"
+#include "materials/measured/measurement_synthesis.h"
+#include "materials/measured/merl_io.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+using namespace fitting;
+
+std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+bool isMaterialData(const std::string& data) {
+  return isInlineMaterial(data) || (data.size() > 5 && data.substr(data.size() - 5) == ".json");
+}
+
+struct LoadedData {
+  std::string label;
+  std::string kind;  // "merl" or "material"
+  MerlSampleCounts counts;
+  BrdfSamples samples;
+};
+
+// A material tabulated in the MERL layout (no perturbation), or a MERL file; its usable cells.
+LoadedData loadData(const std::string& data, int threads, ProgressLine& progress) {
+  LoadedData loaded;
+  MerlTable table;
+  if (isMaterialData(data)) {
+    const json material = loadMaterialArgument(data);
+    std::unique_ptr<BsdfModel> model;
+    try {
+      model = makeBsdf(material);
+    } catch (const MaterialError& error) {
+      if (isInlineMaterial(data)) throw;
+      throw MaterialError("material file " + inQuotes(data) + ": " + error.what());
+    }
+    loaded.label = isInlineMaterial(data) ? material.dump() : data;
+    loaded.kind = "material";
+    const MeasurementSynthesizer synthesizer({model.get()}, MeasurementPerturbation{});
+    table = synthesizeTable(synthesizer, threads, progress.callback("tabulating"));
+  } else {
+    try {
+      table = readMerl(data);
+    } catch (const MerlError& error) {
+      throw InputError(std::string(error.what()) +
+                       "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes), or a material as inline JSON "
+                       "or a .json file");
+    }
+    loaded.label = data;
+    loaded.kind = "merl";
+  }
+  loaded.samples = samplesFromMerl(table, &loaded.counts);
+  if (loaded.samples.empty())
+    throw InputError("DATA " + inQuotes(loaded.label) + ": no valid cells (" + std::to_string(loaded.counts.missing) +
+                     " missing, " + std::to_string(loaded.counts.unreachable) +
+                     " below the horizon); allowed: a table with measured cells");
+  return loaded;
+}
+
+FitOptions fitOptionsOf(const FitCommandOptions& options) {
+  FitOptions fit;
+  fit.metric = *parseMetric(options.metric);
+  fit.robust = *parseRobustLoss(options.robust);
+  fit.robustScale = options.robustScale;
+  fit.gridBudget = options.gridPoints;
+  fit.starts = options.starts;
+  fit.seed = options.seed;
+  fit.maxIterations = options.maxIterations;
+  fit.threads = options.threads;
+  return fit;
+}
+
+struct Verdict {
+  bool good = true;
+  std::vector<std::string> problems;
+};
+
+Verdict judge(const FitResult& result, const WrittenMaterial& written, double maxRelativeError) {
+  Verdict verdict;
+  const auto fail = [&](std::string problem) {
+    verdict.good = false;
+    verdict.problems.push_back(std::move(problem));
+  };
+  if (!result.final.converged)
+    fail("did not converge: " + result.final.termination + " after " + std::to_string(result.final.iterations) +
+         " iterations (" + result.final.message + ")");
+  for (int c = 0; c < 3; ++c)
+    if (!(result.relativeError[c] <= maxRelativeError))
+      fail(std::string("relative error of channel ") + "rgb"[c] + " " + format("%.3g", result.relativeError[c]) +
+           " exceeds --max-relative-error " + format("%g", maxRelativeError));
+  if (!written.material) fail("no registry material: " + written.problem);
+  return verdict;
+}
+
+std::string rangeText(const ParameterEstimate& e) {
+  const auto bound = [](double x) { return std::abs(x) >= 1e300 ? std::string("inf") : format("%g", x); };
+  return "[" + bound(e.lower) + ", " + bound(e.upper) + "]";
+}
+
+void printReport(const FitCommandOptions& options, const LoadedData& data, const FitResult& result,
+                 const WrittenMaterial& written, const Verdict& verdict, const std::string& writtenPath) {
+  std::printf("fit: %s to %s\n", options.model.c_str(), data.label.c_str());
+  std::printf("data: %zu usable cells (%zu missing, %zu below the horizon); fitted on %s\n", data.counts.usable,
+              data.counts.missing, data.counts.unreachable,
+              result.samples == data.counts.usable ? "all of them"
+                                                   : ("a stratified subset of " + std::to_string(result.samples)).c_str());
+  const Metric metric = *parseMetric(options.metric);
+  std::printf("metric: %s; robust loss: %s", describe(metric).c_str(), options.robust.c_str());
+  if (result.robustScale > 0) std::printf(" (scale %.4g)", result.robustScale);
+  std::printf("\ngrid: %zu points on %zu samples; starts on %zu samples:\n", result.gridPoints, result.gridSamples,
+              result.startSamples);
+  std::printf("  %-5s %14s %14s %10s  %s\n", "start", "initial cost", "final cost", "iterations", "termination");
+  for (size_t s = 0; s < result.starts.size(); ++s)
+    std::printf("  %-5zu %14.6g %14.6g %10d  %s\n", s + 1, result.starts[s].initialCost, result.starts[s].finalCost,
+                result.starts[s].iterations, result.starts[s].termination.c_str());
+  std::printf("final: cost %.6g, %d iterations, %s (%s), %.2f s\n\n", result.final.finalCost, result.final.iterations,
+              result.final.termination.c_str(), result.final.message.c_str(), result.seconds);
+  std::printf("%-40s %14s %12s  %s\n", "parameter", "value", "std dev", "range");
+  for (const ParameterEstimate& e : result.parameters)
+    std::printf("%-40s %14.6g %12.3g  %s%s\n", e.name.c_str(), e.value, e.standardDeviation, rangeText(e).c_str(),
+                e.atBound ? "  at bound" : "");
+  std::printf("error bars: sigma^2 = cost / (N - p) = %.4g (N = %zu observations, p = %zu parameters)%s\n",
+              result.sigma2, result.observations, result.parameters.size(),
+              result.covarianceAvailable ? "" : "; covariance not available");
+  for (const std::string& direction : result.unidentified)
+    std::printf("warning: rank deficient: %s cannot be determined from the data; the error bars are the "
+                "pseudo-inverse's\n",
+                direction.c_str());
+  std::printf("\n%-8s %14s %16s\n", "channel", "rms (metric)", "relative error");
+  for (int c = 0; c < 3; ++c) std::printf("%-8c %14.6g %16.4g\n", "rgb"[c], result.rms[c], result.relativeError[c]);
+  std::printf("\nverdict: %s\n", verdict.good ? "GOOD" : "POOR");
+  for (const std::string& problem : verdict.problems) std::printf("  %s\n", problem.c_str());
+  if (written.material) std::printf("material: %s\n", written.material->dump().c_str());
+  if (!writtenPath.empty()) std::printf("wrote %s\n", writtenPath.c_str());
+  else if (!options.out.empty()) std::printf("not written: the fit is poor\n");
+}
+
+}  // namespace
+
+CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "fit", "Fit registry models to a MERL table (or a material tabulated like one) with Ceres, with error bars; "
+             "writes the fitted material as registry JSON");
+  command->add_option("data", options.data, "MERL .binary file, or a material (inline JSON or a .json file) to tabulate")
+      ->required();
+  command
+      ->add_option("--model", options.model,
+                   "Registry types joined by '+', e.g. lambertian+ngan-cook-torrance; a part may be a JSON object "
+                   "whose values are held, e.g. lambertian+{\"type\":\"conductor\",\"distribution\":\"beckmann\"}")
+      ->type_name("SPEC")
+      ->required();
+  command->add_option("--metric", options.metric, "Error metric: l2, ngan, low-l2, low-log, cube-root")
+      ->type_name("NAME")
+      ->required()
+      ->check(choiceOf(metricNames(), "a metric"));
+  command->add_option("--lobes", options.lobes, "Copies of the last component (specular lobes)")
+      ->type_name("N")
+      ->transform(integerIn(1, 3))
+      ->capture_default_str();
+  command->add_option("--robust", options.robust, "Robust loss: none, huber, cauchy, soft-l1")
+      ->type_name("NAME")
+      ->check(choiceOf(robustLossNames(), "a robust loss"))
+      ->capture_default_str();
+  command
+      ->add_option("--robust-scale", options.robustScale,
+                   "Scale of the robust loss in residual units (default: 2.5 robust standard deviations of the "
+                   "residuals at the best grid point)")
+      ->type_name("S")
+      ->check(numberIn(ValueRange::above(0.0)));
+  command->add_flag("--per-channel", options.perChannel, "Fit the shape parameters per colour channel");
+  command->add_option("--samples", options.samples, "Fit a stratified subset of about N cells (0: every usable cell)")
+      ->type_name("N")
+      ->transform(integerIn(0))
+      ->capture_default_str();
+  command->add_option("--seed", options.seed, "Seed of the stratified subsets")
+      ->type_name("INTEGER")
+      ->transform(integerIn(0))
+      ->capture_default_str();
+  command->add_option("--starts", options.starts, "Ceres runs from the best distinct grid points")
+      ->type_name("N")
+      ->transform(integerIn(1, 16))
+      ->capture_default_str();
+  command->add_option("--grid-points", options.gridPoints, "Budget of the initial grid over the shape parameters")
+      ->type_name("N")
+      ->transform(integerIn(1, 100000))
+      ->capture_default_str();
+  command->add_option("--max-iterations", options.maxIterations, "Levenberg-Marquardt iterations per run")
+      ->type_name("N")
+      ->transform(integerIn(1, 100000))
+      ->capture_default_str();
+  command
+      ->add_option("--max-relative-error", options.maxRelativeError,
+                   "A fit whose relative error (in the metric) exceeds this in any channel is poor: reported, not "
+                   "written, exit 1")
+      ->type_name("E")
+      ->check(numberIn(ValueRange::above(0.0)))
+      ->capture_default_str();
+  command->add_option("--threads", options.threads, "Worker threads (0: all cores); the result does not depend on it")
+      ->type_name("N")
+      ->transform(integerIn(0, 1024))
+      ->capture_default_str();
+  command->add_option("--out", options.out, "Write the fitted material (registry JSON) here, atomically, if the fit is good")
+      ->type_name("FILE");
+  command->add_flag("--json", options.json, "Print the whole report as JSON");
+  return command;
+}
+
+int runFitCommand(const FitCommandOptions& options) {
+  // Every input is checked before the data is read or anything is fitted.
+  std::vector<json> components;
+  try {
+    components = parseModelSpec(options.model, options.lobes);
+  } catch (const MaterialError& error) {
+    throw MaterialError(std::string("--model: ") + error.what());
+  }
+  std::unique_ptr<FitModel> model;
+  try {
+    model = std::make_unique<FitModel>(components, options.perChannel);
+  } catch (const MaterialError& error) {
+    throw MaterialError(std::string("--model: ") + error.what());
+  }
+  if (!options.out.empty()) checkOutputFile("--out", options.out, "fit.json");
+  FitOptions fitOptions = fitOptionsOf(options);
+  if (fitOptions.robust == RobustLoss::None && options.robustScale)
+    throw InputError("--robust-scale: only applies with --robust huber, cauchy or soft-l1");
+
+  ProgressLine progress;
+  const LoadedData data = loadData(options.data, options.threads, progress);
+  const BrdfSamples samples = stratifiedSubset(data.samples, options.samples, options.seed);
+  fitOptions.progress = progress.callback("fit");
+  const FitResult result = fitBrdf(*model, samples, fitOptions);
+  progress.clear();
+
+  const WrittenMaterial written = writeMaterial(model->fittedParts(result.x.data()));
+  const Verdict verdict = judge(result, written, options.maxRelativeError);
+  std::string writtenPath;
+  if (verdict.good && !options.out.empty()) {
+    writeTextFileAtomically(options.out, written.material->dump(2) + "\n");
+    writtenPath = options.out;
+  }
+  if (options.json) {
+    json report{{"data",
+                 {{"source", data.label},
+                  {"kind", data.kind},
+                  {"usable_cells", data.counts.usable},
+                  {"missing_cells", data.counts.missing},
+                  {"unreachable_cells", data.counts.unreachable}}},
+                {"model", options.model},
+                {"components", components},
+                {"lobes", options.lobes},
+                {"per_channel", options.perChannel},
+                {"fit", toJson(result, *model, fitOptions)},
+                {"material", written.material ? *written.material : json()},
+                {"material_problem", written.problem},
+                {"verdict", verdict.good ? "good" : "poor"},
+                {"problems", verdict.problems},
+                {"written", writtenPath.empty() ? json() : json(writtenPath)}};
+    std::cout << report.dump(2) << "\n";
+  } else {
+    printReport(options, data, result, written, verdict, writtenPath);
+  }
+  return static_cast<int>(verdict.good ? ExitCode::Success : ExitCode::CheckFailed);
+}
+
+}  // namespace scatterlab

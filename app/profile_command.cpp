@@ -1,0 +1,258 @@
+#include "app/profile_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_code.h"
+#include "app/option_values.h"
+#include "app/progress.h"
+#include "materials/bssrdf/chandrasekhar_h.h"
+#include "validation/half_space_reference.h"
+#include "materials/bssrdf/subsurface_registry.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* ChannelNames[3] = {"r", "g", "b"};
+constexpr uint64_t MaxPaths = 10'000'000'000;
+
+struct LoadedMaterial {
+  std::string label;
+  json completed;
+  SubsurfaceMaterial material;
+};
+
+LoadedMaterial loadSubsurface(const std::string& argument) {
+  const json description = loadMaterialArgument(argument);
+  try {
+    return {isInlineMaterial(argument) ? description.dump() : argument, completeMaterial(description),
+            makeSubsurface(description)};
+  } catch (const MaterialError& error) {
+    if (isInlineMaterial(argument)) throw;
+    throw MaterialError("material file \"" + argument + "\": " + error.what());
+  }
+}
+
+// Annuli from 0: [0, min], then log-spaced to max. By default max is where every reflecting
+// channel holds 99.9% of its profile, and min a thousandth of it.
+std::vector<double> radiusEdges(const ProfileCommandOptions& options, const RadialProfile& profile) {
+  double largest = 0.0;
+  for (int c = 0; c < 3; ++c)
+    if (profile.totalReflectance()[c] > 0) largest = std::max(largest, profile.sampleRadius(c, 0.999));
+  if (!(largest > 0)) largest = 1.0;
+  const double maxRadius = options.maxRadius.value_or(largest);
+  const double minRadius = options.minRadius.value_or(1e-3 * maxRadius);
+  if (!(minRadius < maxRadius))
+    throw InputError("--min-radius: " + std::to_string(minRadius) + " mm is not below the largest radius " +
+                     std::to_string(maxRadius) + " mm; allowed: 0 < --min-radius < --max-radius");
+  return logRadiusEdges(minRadius, maxRadius, options.bins);
+}
+
+// R averaged over each annulus, exactly: Rd (cdf(r1) - cdf(r0)) / (pi (r1^2 - r0^2)).
+std::vector<double> annulusMeans(const RadialProfile& profile, int channel, const std::vector<double>& edges) {
+  std::vector<double> means;
+  const double total = profile.totalReflectance()[channel];
+  for (size_t k = 0; k + 1 < edges.size(); ++k) {
+    const double mass = total > 0 ? total * (profile.radiusCdf(channel, edges[k + 1]) - profile.radiusCdf(channel, edges[k])) : 0.0;
+    means.push_back(mass / (Pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k])));
+  }
+  return means;
+}
+
+struct ChannelWalk {
+  HalfSpaceWalkResult result;
+  std::optional<double> exactTotal;  // index-matched isotropic: Chandrasekhar's H
+};
+
+HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const ScatteringMedium& medium, int channel,
+                                   const std::vector<double>& edges) {
+  HalfSpaceWalkSettings s;
+  s.albedo = options.albedo.empty() ? medium.albedo()[channel] : options.albedo[options.albedo.size() == 3 ? channel : 0];
+  s.extinction = medium.extinction()[channel];
+  s.g = options.g.value_or(medium.g);
+  s.eta = options.eta.value_or(medium.eta);
+  s.radiusEdges = edges;
+  s.paths = options.paths;
+  s.seed = deriveSeed(options.seed, uint64_t(channel));
+  s.threads = options.threads;
+  return s;
+}
+
+void checkWalkOptions(const ProfileCommandOptions& options) {
+  if (!options.reference.empty()) {
+    if (!options.albedo.empty() && options.albedo.size() != 1 && options.albedo.size() != 3)
+      throw InputError("--albedo: " + std::to_string(options.albedo.size()) +
+                       " values given; allowed: one albedo for every channel, or three (r,g,b), each in [0, 1]");
+    return;
+  }
+  const char* walkOnly = !options.albedo.empty() ? "--albedo" : options.eta ? "--eta" : options.g ? "--g" : nullptr;
+  if (walkOnly)
+    throw InputError(std::string(walkOnly) + ": sets the random walk's medium; allowed: only with --reference walk");
+}
+
+std::string fixed(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
+               const std::vector<std::vector<double>>& means, const std::vector<std::optional<ChannelWalk>>& walks) {
+  const RadialProfile& profile = *loaded.material.profile;
+  std::cout << "material (every default filled in): " << loaded.completed.dump() << "\n";
+  std::cout << "profile " << profile.name() << ", eta " << loaded.material.medium.eta << "; lengths in mm, R in mm^-2\n\n";
+  std::cout << "channel  total diffuse reflectance";
+  if (walks[0]) std::cout << "   random walk (+- standard error)";
+  std::cout << "\n";
+  for (int c = 0; c < 3; ++c) {
+    std::cout << "  " << ChannelNames[c] << "      " << fixed(walks[0] ? "%-26.6f" : "%.6f", profile.totalReflectance()[c]);
+    if (const auto& walk = walks[size_t(c)]) {
+      std::cout << fixed("%.6f", walk->result.totalReflectance) << " +- " << fixed("%.6f", walk->result.totalStdError)
+                << "  (albedo " << fixed("%.6g", walk->result.settings.albedo) << ", " << walk->result.settings.paths
+                << " paths";
+      if (walk->exactTotal) std::cout << "; exact " << fixed("%.6f", *walk->exactTotal) << " by Chandrasekhar's H";
+      std::cout << ")";
+    }
+    std::cout << "\n";
+  }
+  std::string header = "\nR(r) averaged over annuli\n  r from     r to       ";
+  for (int c = 0; c < 3; ++c) {
+    header += std::string("R_") + ChannelNames[c] + " profile  ";
+    if (walks[0]) header += std::string("R_") + ChannelNames[c] + " walk     +- se        ";
+  }
+  header.erase(header.find_last_not_of(' ') + 1);
+  std::cout << header << "\n";
+  for (size_t k = 0; k + 1 < edges.size(); ++k) {
+    std::string line = "  " + fixed("%-10.4g", edges[k]) + " " + fixed("%-10.4g", edges[k + 1]);
+    for (int c = 0; c < 3; ++c) {
+      line += " " + fixed("%-12.5e", means[size_t(c)][k]);
+      if (const auto& walk = walks[size_t(c)])
+        line += " " + fixed("%-12.5e", walk->result.profile[k]) + " " + fixed("%-12.3e", walk->result.profileStdError[k]);
+    }
+    line.erase(line.find_last_not_of(' ') + 1);
+    std::cout << line << "\n";
+  }
+}
+
+json walkJson(const ChannelWalk& walk) {
+  const HalfSpaceWalkResult& r = walk.result;
+  json out{{"albedo", r.settings.albedo},
+           {"extinction", r.settings.extinction},
+           {"eta", r.settings.eta},
+           {"g", r.settings.g},
+           {"paths", r.settings.paths},
+           {"seed", r.settings.seed},
+           {"total_reflectance", r.totalReflectance},
+           {"std_error", r.totalStdError},
+           {"truncated_paths", r.truncated},
+           {"mean_scattering_events", double(r.scatteringEvents) / double(r.settings.paths)},
+           {"profile", r.profile},
+           {"profile_std_error", r.profileStdError}};
+  if (walk.exactTotal) out["exact_total_reflectance"] = *walk.exactTotal;
+  return out;
+}
+
+}  // namespace
+
+CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "profile", "Print a subsurface material's radial profile R(r) and total diffuse reflectance per channel, "
+                 "optionally next to the half-space random walk (--reference walk)");
+  command->add_option("material", options.material, "Subsurface material: inline JSON or a JSON file")->required();
+  command->add_option("--reference", options.reference, "Also run the ground truth: the half-space random walk")
+      ->check(CLI::IsMember({"walk"}))
+      ->type_name("walk");
+  command->add_option("--albedo", options.albedo,
+                      "Walk: single-scattering albedo sigma_s / sigma_t, one value or r,g,b (default: the medium's)")
+      ->delimiter(',')
+      ->type_name("ALBEDO")
+      ->check(numberIn(ValueRange::closed(0.0, 1.0), "an albedo"));
+  command->add_option("--eta", options.eta, "Walk: boundary index of refraction, 1 = index-matched (default: the material's)")
+      ->type_name("NUMBER")
+      ->check(numberIn(ValueRange{0.0, 4.0, true, false}, "an index of refraction"));
+  command->add_option("--g", options.g, "Walk: Henyey-Greenstein mean cosine (default: the material's)")
+      ->type_name("NUMBER")
+      ->check(numberIn(ValueRange{-1.0, 1.0, true, true}, "a mean cosine"));
+  command->add_option("--paths", options.paths, "Walk: paths per channel")
+      ->type_name("INTEGER")
+      ->transform(integerIn(1000, MaxPaths))
+      ->capture_default_str();
+  command->add_option("--min-radius", options.minRadius, "Outer radius of the first annulus, mm (default: max / 1000)")
+      ->type_name("MM")
+      ->check(numberIn(ValueRange::above(0.0), "a radius in mm"));
+  command->add_option("--max-radius", options.maxRadius,
+                      "Outer radius of the last annulus, mm (default: where every channel holds 99.9% of its profile)")
+      ->type_name("MM")
+      ->check(numberIn(ValueRange::above(0.0), "a radius in mm"));
+  command->add_option("--bins", options.bins, "Annuli after the first (log-spaced)")
+      ->type_name("INTEGER")
+      ->check(CLI::Range(2, 1000))
+      ->capture_default_str();
+  command->add_option("--seed", options.seed, "Seed of the walk; the same seed gives the same numbers")
+      ->type_name("INTEGER")
+      ->transform(integerIn(0))
+      ->capture_default_str();
+  command->add_option("--threads", options.threads, "Worker threads of the walk, 0 for all cores (same result)")
+      ->type_name("INTEGER")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  command->add_flag("--json", options.json, "Print one JSON document");
+  return command;
+}
+
+int runProfileCommand(const ProfileCommandOptions& options) {
+  checkWalkOptions(options);
+  const LoadedMaterial loaded = loadSubsurface(options.material);
+  const RadialProfile& profile = *loaded.material.profile;
+  const std::vector<double> edges = radiusEdges(options, profile);
+
+  std::vector<std::vector<double>> means;
+  for (int c = 0; c < 3; ++c) means.push_back(annulusMeans(profile, c, edges));
+  std::vector<std::optional<ChannelWalk>> walks(3);
+  if (options.reference == "walk") {
+    ProgressLine progress;
+    for (int c = 0; c < 3; ++c) {
+      const HalfSpaceWalkSettings settings = walkSettings(options, loaded.material.medium, c, edges);
+      const ProgressCallback report = progress.callback(std::string("walk ") + ChannelNames[c]);
+      ChannelWalk walk{simulateHalfSpace(settings, report ? WalkProgress([&](double f) { report("", f); })
+                                                          : WalkProgress()),
+                       std::nullopt};
+      if (settings.eta == 1.0 && settings.g == 0.0 && settings.incidentCosTheta == 1.0)
+        walk.exactTotal = ChandrasekharH(settings.albedo).directionalAlbedo(1.0);
+      walks[size_t(c)] = std::move(walk);
+    }
+  }
+
+  if (!options.json) {
+    printText(loaded, edges, means, walks);
+    return static_cast<int>(ExitCode::Success);
+  }
+  json channels = json::array();
+  for (int c = 0; c < 3; ++c) {
+    json channel{{"channel", ChannelNames[c]},
+                 {"total_reflectance", profile.totalReflectance()[c]},
+                 {"profile", means[size_t(c)]}};
+    if (walks[size_t(c)]) channel["walk"] = walkJson(*walks[size_t(c)]);
+    channels.push_back(std::move(channel));
+  }
+  const ScatteringMedium& m = loaded.material.medium;
+  const json document{
+      {"material", loaded.completed},
+      {"label", loaded.label},
+      {"profile_model", profile.name()},
+      {"medium",
+       {{"sigma_s", {m.sigmaS.x, m.sigmaS.y, m.sigmaS.z}}, {"sigma_a", {m.sigmaA.x, m.sigmaA.y, m.sigmaA.z}}, {"g", m.g}, {"eta", m.eta}}},
+      {"units", "lengths mm, coefficients mm^-1, R mm^-2 (averaged over each annulus)"},
+      {"radius_edges", edges},
+      {"channels", std::move(channels)}};
+  std::cout << document.dump(2) << "\n";
+  return static_cast<int>(ExitCode::Success);
+}
+
+}  // namespace scatterlab

@@ -1,0 +1,189 @@
+#include "materials/bssrdf/subsurface_registry.h"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+#include "materials/bssrdf/measured_media.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr std::array<NamedChoice<ProfileModel>, 4> Profiles{{{"dipole", ProfileModel::Dipole},
+                                                             {"better-dipole", ProfileModel::BetterDipole},
+                                                             {"beam-diffusion", ProfileModel::BeamDiffusion},
+                                                             {"burley", ProfileModel::Burley}}};
+constexpr std::array<NamedChoice<BurleyFit>, 3> BurleyFits{{{"searchlight", BurleyFit::Searchlight},
+                                                            {"diffuse", BurleyFit::DiffuseTransmission},
+                                                            {"searchlight-dmfp", BurleyFit::SearchlightDiffuseMfp}}};
+constexpr std::array<NamedChoice<SubsurfaceBoundary>, 2> Boundaries{{{"smooth", SubsurfaceBoundary::Smooth},
+                                                                     {"rough", SubsurfaceBoundary::Rough}}};
+
+// Jensen et al. 2001 use 1.3 for every medium but marble (1.5).
+constexpr double DefaultEta = 1.3;
+constexpr double DefaultRoughness = 0.1;
+const ValueRange EtaRange{0.0, 4.0, true, false};
+const ValueRange RoughnessRange = ValueRange::closed(0.001, 1.0);
+
+// Defaults that depend on other keys, and combinations the spec cannot rule out.
+void completeDependent(MaterialParameters& p, json& completed) {
+  if (!p.has("eta")) {
+    const MeasuredMedium* medium = p.has("medium") ? findMeasuredMedium(p.choice("medium")) : nullptr;
+    const double eta = medium ? medium->eta : DefaultEta;
+    p.set("eta", eta);
+    completed["eta"] = eta;
+  }
+  const bool rough = p.choice("boundary") == "rough";
+  if (rough && !p.has("roughness")) {
+    p.set("roughness", DefaultRoughness);
+    completed["roughness"] = DefaultRoughness;
+  }
+  if (!rough && p.has("roughness"))
+    throwMaterialKeyError("roughness", completed["roughness"], "applies to a rough boundary only",
+                          "\"roughness\" with \"boundary\": \"rough\"");
+  const bool burley = p.choice("profile") == "burley";
+  if (burley && !p.has("burley_fit")) {
+    p.set("burley_fit", std::string("searchlight"));
+    completed["burley_fit"] = "searchlight";
+  }
+  if (!burley && p.has("burley_fit"))
+    throwMaterialKeyError("burley_fit", completed["burley_fit"], "applies to the burley profile only",
+                          "\"burley_fit\" with \"profile\": \"burley\"");
+}
+
+// The medium the description gives, before the profile is built (scaled).
+ScatteringMedium mediumOf(const MaterialParameters& p, ProfileModel model, const json& completed) {
+  const double g = p.number("g"), eta = p.number("eta"), scale = p.number("scale");
+  ScatteringMedium medium;
+  medium.g = g;
+  medium.eta = eta;
+  if (p.has("medium")) {
+    const MeasuredMedium* measured = findMeasuredMedium(p.choice("medium"));
+    if (!measured) throw std::logic_error("medium \"" + p.choice("medium") + "\" listed but not found");
+    medium.sigmaS = measured->sigmaSPrime / (1.0 - g);
+    medium.sigmaA = measured->sigmaA;
+  } else if (p.has("sigma_s")) {
+    medium.sigmaS = p.rgb("sigma_s");
+    medium.sigmaA = p.rgb("sigma_a");
+    for (int c = 0; c < 3; ++c)
+      if (!(medium.sigmaS[c] + medium.sigmaA[c] > 0))
+        throwMaterialKeyError("sigma_a", completed["sigma_a"],
+                              "leaves a channel with sigma_s + sigma_a = 0 (channel " + std::to_string(c) +
+                                  ": no interaction, no profile)",
+                              "sigma_s + sigma_a > 0 in every channel");
+  } else {
+    try {
+      medium = mediumFromReflectance(model, p.rgb("reflectance"), p.rgb("mfp"), g, eta);
+    } catch (const std::invalid_argument& error) {
+      throwMaterialKeyError("reflectance", completed["reflectance"], std::string("is out of reach (") + error.what() + ")",
+                            "a reflectance the profile can produce at this eta and g");
+    }
+  }
+  medium.sigmaS *= scale;
+  medium.sigmaA *= scale;
+  return medium;
+}
+
+SubsurfaceMaterial buildSubsurface(const MaterialParameters& p, const json& completed) {
+  SubsurfaceMaterial material;
+  material.model = choiceValue(Profiles, p.choice("profile"));
+  material.burleyFit = p.has("burley_fit") ? choiceValue(BurleyFits, p.choice("burley_fit")) : BurleyFit::Searchlight;
+  material.boundary = choiceValue(Boundaries, p.choice("boundary"));
+  material.roughness = p.has("roughness") ? p.number("roughness") : 0.0;
+  material.medium = mediumOf(p, material.model, completed);
+  try {
+    material.profile = makeProfile(material.model, material.medium, material.burleyFit);
+  } catch (const std::invalid_argument& error) {
+    throwMaterialKeyError("burley_fit", completed.value("burley_fit", json()), std::string("cannot be used here (") + error.what() + ")",
+                          "\"searchlight\" or \"diffuse\" for a medium without absorption");
+  }
+  return material;
+}
+
+ParameterSpec rgbParameter(std::string name, const ValueRange& range, std::string description) {
+  return {.name = std::move(name), .kind = ParameterKind::Rgb, .range = range, .description = std::move(description)};
+}
+
+}  // namespace
+
+MaterialModel subsurfaceMaterialModel() {
+  return {
+      .type = "subsurface",
+      .kind = MaterialKind::Subsurface,
+      .description = "Subsurface scattering (BSSRDF): a radial diffusion profile per RGB channel, sampled exactly "
+                     "(radius and multi-axis probe), behind a smooth or rough dielectric boundary",
+      .citation = "Jensen et al. 2001 (dipole, measured media); d'Eon 2012 (better dipole); Habel et al. 2013 and "
+                  "pbrt-v3 (photon beam diffusion); Christensen & Burley 2015 (normalised diffusion); King et al. "
+                  "2013 (probe sampling)",
+      .parameters =
+          {{.name = "profile",
+            .kind = ParameterKind::Choice,
+            .choices = choiceNames(Profiles),
+            .defaultValue = "burley",
+            .description = "the diffusion profile R(r)"},
+           {.name = "medium",
+            .kind = ParameterKind::Choice,
+            .choices = measuredMediumNames(),
+            .defaultValue = "Skin1",
+            .description = "a measured medium of Jensen et al. 2001 (reduced coefficients, mm^-1)"},
+           rgbParameter("sigma_s", ValueRange::atLeast(0.0), "scattering coefficient per channel, mm^-1, with \"sigma_a\""),
+           rgbParameter("sigma_a", ValueRange::atLeast(0.0), "absorption coefficient per channel, mm^-1, with \"sigma_s\""),
+           rgbParameter("reflectance", ValueRange::closed(0.0, 1.0),
+                        "diffuse colour: the profile's total diffuse reflectance per channel, with \"mfp\""),
+           rgbParameter("mfp", ValueRange::above(0.0), "mean free path 1 / sigma_t per channel, mm, with \"reflectance\""),
+           {.name = "eta",
+            .kind = ParameterKind::Number,
+            .range = EtaRange,
+            .description = "index of refraction inside relative to outside; default: the medium's (1.3, Marble 1.5), "
+                           "else 1.3"},
+           {.name = "g",
+            .kind = ParameterKind::Number,
+            .range = ValueRange{-1.0, 1.0, true, true},
+            .defaultValue = 0.0,
+            .description = "Henyey-Greenstein mean cosine (a medium's table sigma_s' is kept: sigma_s = sigma_s' / (1 - g))"},
+           {.name = "scale",
+            .kind = ParameterKind::Number,
+            .range = ValueRange::above(0.0),
+            .defaultValue = 1.0,
+            .description = "multiplies every coefficient (divides every length): 10 for a scene in cm"},
+           {.name = "burley_fit",
+            .kind = ParameterKind::Choice,
+            .choices = choiceNames(BurleyFits),
+            .description = "burley only (default \"searchlight\"): the shape factor s(A) fitted to a searchlight "
+                           "(d = mfp / s), diffuse transmission (d = mfp / s), or a searchlight with the diffuse mean "
+                           "free path (d = dmfp / s)"},
+           {.name = "boundary",
+            .kind = ParameterKind::Choice,
+            .choices = choiceNames(Boundaries),
+            .defaultValue = "smooth",
+            .description = "the interface of the medium (for rendering): smooth or rough dielectric of index eta"},
+           {.name = "roughness",
+            .kind = ParameterKind::Number,
+            .range = RoughnessRange,
+            .description = "GGX alpha of a rough boundary (default 0.1)"}},
+      .alternatives = {{"medium"}, {"sigma_s", "sigma_a"}, {"reflectance", "mfp"}},
+      .build = nullptr,
+      .completeDependent = completeDependent,
+  };
+}
+
+bool isSubsurfaceMaterial(const json& material) {
+  if (!material.is_object()) return false;
+  const auto type = material.find("type");
+  if (type == material.end() || !type->is_string()) return false;
+  const MaterialModel* model = findMaterialModel(type->get<std::string>());
+  return model && model->kind == MaterialKind::Subsurface;
+}
+
+SubsurfaceMaterial makeSubsurface(const json& material) {
+  const ValidatedMaterial validated = validateMaterial(material);
+  if (validated.model->kind != MaterialKind::Subsurface)
+    throwMaterialKeyError("type", validated.model->type, "is a BSDF model, not a subsurface material",
+                          "\"subsurface\"");
+  return buildSubsurface(validated.parameters, validated.completed);
+}
+
+}  // namespace scatterlab

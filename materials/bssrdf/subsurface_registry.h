@@ -1,0 +1,25 @@
+// The registry entry of subsurface materials (DESIGN.md, "Material descriptions"):
+//   {"type": "subsurface", "profile": "burley", "medium": "Skin1", "scale": 1.0}
+// It shares the BSDF registry's parameter specs and validation (registry.h: every error names
+// the key, the value and what is allowed), is listed by `scatterlab models` with the BSDFs
+// (kind "subsurface"), and is built by makeSubsurface rather than makeBsdf.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "materials/bsdf/registry.h"
+#include "materials/bssrdf/subsurface_material.h"
+
+namespace scatterlab {
+
+// The "subsurface" entry for materialModels().
+MaterialModel subsurfaceMaterialModel();
+
+// True when `material` is an object whose type is a subsurface model (no other validation).
+bool isSubsurfaceMaterial(const nlohmann::json& material);
+
+// Builds the subsurface material a description gives; throws MaterialError on any invalid
+// description, and for a BSDF description.
+SubsurfaceMaterial makeSubsurface(const nlohmann::json& material);
+
+}  // namespace scatterlab

@@ -1,0 +1,183 @@
+// `scatterlab fit`, end to end: a good fit is printed and written as registry JSON that the
+// registry and `check` accept; a poor fit (not converged, too large an error, no registry
+// form) is reported and not written (exit 1); bad input gets one message naming the option,
+// file or value (exit 2) and nothing is written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "materials/bsdf/registry.h"
+#include "materials/measured/merl_io.h"
+
+namespace scatterlab {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+using namespace cli_runner;
+
+// lambertian 0.2 + Cook-Torrance (albedo 0.2, F0 0.3, roughness 0.1), as one registry material.
+const std::string Truth =
+    R"({"type":"blend","weight":0.5,"materials":[{"type":"lambertian","albedo":0.4},)"
+    R"({"type":"ngan-cook-torrance","albedo":0.4,"eta":0.3,"roughness":0.1}]})";
+const std::vector<std::string> Quick{"--samples", "20000", "--grid-points", "64", "--starts", "2"};
+
+double parameter(const json& report, const std::string& name) {
+  for (const json& p : report.at("fit").at("parameters"))
+    if (p.at("name") == name) return p.at("value").get<double>();
+  ADD_FAILURE() << "no parameter " << name;
+  return 0;
+}
+
+fs::path fitFile() { return fs::path(SCATTERLAB_DATA_DIR) / "published-fits" / "ngan_cooktorrance.fit"; }
+
+TEST(FitCli, HelpListsEveryOption) {
+  const ProcessResult run = runScatterlab({"fit", "--help"});
+  EXPECT_EQ(run.exitCode, 0) << describe(run);
+  for (const char* option : {"--model", "--metric", "--lobes", "--robust", "--robust-scale", "--per-channel",
+                             "--samples", "--seed", "--starts", "--grid-points", "--max-iterations",
+                             "--max-relative-error", "--threads", "--out", "--json"})
+    EXPECT_NE(run.out.find(option), std::string::npos) << option;
+}
+
+TEST(FitCli, GoodFitIsPrintedAndWrittenAsARegistryMaterial) {
+  const fs::path out = uniquePath("fit") += ".json";
+  const ProcessResult run = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
+                                                                   "--metric", "ngan", "--out", out.string()} +
+                                          Quick);
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  expectMentions(run.out, {"ngan-cook-torrance.roughness", "std dev", "sigma^2", "relative error", "iterations",
+                           "CONVERGENCE", "verdict: GOOD", "wrote " + out.string()});
+  const json material = json::parse(readFile(out));
+  EXPECT_NO_THROW(makeBsdf(material));
+  EXPECT_EQ(material, completeMaterial(material));  // written complete
+  // `check` accepts it as it is (a few thousand samples: a smoke test of the handover).
+  const ProcessResult check =
+      runScatterlab({"check", out.string(), "--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"});
+  EXPECT_EQ(check.exitCode, 0) << describe(check);
+  fs::remove(out);
+}
+
+TEST(FitCli, JsonReportHoldsTheParametersTheMaterialAndTheVerdict) {
+  const ProcessResult run = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
+                                                                   "--metric", "low-log", "--json"} +
+                                          Quick);
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json report = json::parse(run.out);
+  EXPECT_EQ(report.at("verdict"), "good");
+  EXPECT_EQ(report.at("fit").at("metric"), "low-log");
+  EXPECT_TRUE(report.at("fit").at("converged").get<bool>());
+  // Noise-free data from the model itself: recovered (1e-4 as recovery_test.cpp).
+  EXPECT_NEAR(parameter(report, "ngan-cook-torrance.roughness"), 0.1, 1e-5);
+  EXPECT_NEAR(parameter(report, "lambertian.albedo.g"), 0.2, 2e-5);
+  EXPECT_EQ(report.at("material").at("type"), "blend");
+  EXPECT_TRUE(report.at("written").is_null());
+  EXPECT_EQ(report.at("data").at("kind"), "material");
+}
+
+TEST(FitCli, SameResultForAnyThreadCount) {
+  const auto fitWith = [&](const std::string& threads) {
+    const ProcessResult run = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+conductor",
+                                                                     "--metric", "cube-root", "--json", "--threads", threads} +
+                                            Quick);
+    EXPECT_EQ(run.exitCode, 0) << describe(run);
+    return json::parse(run.out).at("fit").at("parameters");
+  };
+  EXPECT_EQ(fitWith("1"), fitWith("2"));
+}
+
+// A measured-style MERL file with noise and missing grazing cells.
+TEST(FitCli, FitsANoisyMerlFileWithMissingCells) {
+  const fs::path table = uniquePath("bronze") += ".binary";
+  const ProcessResult synth = runScatterlab({"synth", "--fit", fitFile().string(), "--name", "alum-bronze", "--out",
+                                             table.string(), "--log-noise", "0.05", "--missing-above", "80"});
+  ASSERT_EQ(synth.exitCode, 0) << describe(synth);
+  const ProcessResult run = runScatterlab(
+      std::vector<std::string>{"fit", table.string(), "--model", "lambertian+ngan-cook-torrance", "--metric", "ngan",
+                               "--json"} +
+      Quick);
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json report = json::parse(run.out);
+  EXPECT_GT(report.at("data").at("missing_cells").get<size_t>(), 100000u);
+  EXPECT_EQ(report.at("data").at("kind"), "merl");
+  // 5% log-normal noise: the roughness within 1% of the line's 0.0367.
+  EXPECT_NEAR(parameter(report, "ngan-cook-torrance.roughness"), 0.0367, 0.01 * 0.0367);
+  fs::remove(table);
+}
+
+TEST(FitCli, PoorFitIsReportedAndNotWritten) {
+  const fs::path out = uniquePath("poor") += ".json";
+  // A Lambertian cannot reproduce a highlight: its relative error (1.0) is far above the
+  // default 0.7.
+  const ProcessResult lambertian = runScatterlab(
+      std::vector<std::string>{"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", out.string()} + Quick);
+  EXPECT_EQ(lambertian.exitCode, 1) << describe(lambertian);
+  expectMentions(lambertian.out, {"verdict: POOR", "relative error of channel", "exceeds --max-relative-error",
+                                  "not written"});
+  EXPECT_FALSE(fs::exists(out));
+  // One iteration: Ceres stops before converging, and says so.
+  const ProcessResult stopped = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
+                                                                       "--metric", "ngan", "--max-iterations", "1",
+                                                                       "--out", out.string()} +
+                                              Quick);
+  EXPECT_EQ(stopped.exitCode, 1) << describe(stopped);
+  expectMentions(stopped.out, {"verdict: POOR", "did not converge: NO_CONVERGENCE", "iterations"});
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// colonial-maple-223's Lambertian and Cook-Torrance albedos add up to more than 1: the fit
+// is exact but the sum has no registry form.
+TEST(FitCli, SumWithoutARegistryFormIsPoor) {
+  const fs::path table = uniquePath("maple") += ".binary";
+  ASSERT_EQ(runScatterlab({"synth", "--fit", fitFile().string(), "--name", "colonial-maple-223", "--out", table.string()})
+                .exitCode,
+            0);
+  const ProcessResult run = runScatterlab(
+      std::vector<std::string>{"fit", table.string(), "--model", "lambertian+ngan-cook-torrance", "--metric", "ngan"} +
+      Quick);
+  EXPECT_EQ(run.exitCode, 1) << describe(run);
+  expectMentions(run.out, {"verdict: POOR", "no registry material", "channel r"});
+  fs::remove(table);
+}
+
+TEST(FitCli, BadInputNamesTheOptionFileOrValueAndWritesNothing) {
+  const fs::path out = uniquePath("never") += ".json";
+  const std::string o = out.string();
+  const std::vector<std::string> fit{"fit", Truth, "--out", o};
+  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian+ggx", "--metric", "ngan"},
+                 {"--model", "\"ggx\" is not a known model", "allowed", "ngan-cook-torrance"});
+  expectBadInput(fit + std::vector<std::string>{"--model", "dielectric", "--metric", "ngan"},
+                 {"--model", "\"dielectric\" cannot be fitted", "delta"});
+  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "l1"},
+                 {"--metric", "\"l1\" is not a metric", "\"low-log\""});
+  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--robust", "tukey"},
+                 {"--robust", "\"tukey\" is not a robust loss", "\"cauchy\""});
+  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--lobes", "4"},
+                 {"--lobes", "out of range", "[1, 3]"});
+  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--robust-scale", "0.1"},
+                 {"--robust-scale", "--robust"});
+  expectBadInput({"fit", Truth, "--model", "lambertian"}, {"--metric", "required"});
+  expectBadInput({"fit", (testOutputDir() / "absent.binary").string(), "--model", "lambertian", "--metric", "ngan"},
+                 {"absent.binary", "not found", "allowed"});
+  expectBadInput({"fit", R"({"type":"lambertian","albedo":2})", "--model", "lambertian", "--metric", "ngan"},
+                 {"albedo", "out of range"});
+  expectBadInput({"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", (out / "sub" / "x.json").string()},
+                 {"--out", "does not exist"});
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(FitCli, TableWithoutValidCellsIsBadInput) {
+  const fs::path table = uniquePath("empty") += ".binary";
+  MerlTable empty;
+  for (size_t cell = 0; cell < merl::CellCount; ++cell) empty.setMissing(cell);
+  writeMerl(table, empty);
+  expectBadInput({"fit", table.string(), "--model", "lambertian", "--metric", "ngan"},
+                 {table.string(), "no valid cells", "missing"});
+  fs::remove(table);
+}
+
+}  // namespace
+}  // namespace scatterlab

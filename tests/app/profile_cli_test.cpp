@@ -1,0 +1,162 @@
+// `scatterlab profile`, and subsurface materials in `scatterlab check` and `scatterlab models`,
+// end to end: exit codes, output, and messages for bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+
+namespace scatterlab {
+namespace {
+
+using nlohmann::json;
+using namespace cli_runner;
+
+TEST(ProfileCli, HelpListsEveryOption) {
+  const ProcessResult run = runScatterlab({"profile", "--help"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  for (const char* option : {"--reference", "--albedo", "--eta", "--g", "--paths", "--min-radius", "--max-radius",
+                             "--bins", "--seed", "--threads", "--json"})
+    EXPECT_NE(run.out.find(option), std::string::npos) << option;
+}
+
+TEST(ProfileCli, PrintsTheProfileAndJensensReflectance) {
+  const ProcessResult run = runScatterlab({"profile", R"({"type": "subsurface", "profile": "dipole"})", "--json"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json out = json::parse(run.out);
+  EXPECT_EQ(out["profile_model"], "dipole");
+  EXPECT_EQ(out["radius_edges"].size(), 25u);  // 0 and 24 log-spaced edges
+  const double expected[3] = {0.436, 0.227, 0.131};
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(out["channels"][size_t(c)]["total_reflectance"].get<double>(), expected[c], 5e-4);
+    EXPECT_EQ(out["channels"][size_t(c)]["profile"].size(), 24u);
+  }
+  EXPECT_TRUE(run.err.empty()) << run.err;  // no progress when stderr is not a terminal
+}
+
+TEST(ProfileCli, WalkReferenceAgreesWithTheHFunctionWhenIndexMatched) {
+  const ProcessResult run =
+      runScatterlab({"profile", R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "0.8", "--eta", "1",
+                     "--g", "0", "--paths", "40000", "--bins", "6", "--json"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json out = json::parse(run.out);
+  for (const json& channel : out["channels"]) {
+    const json& walk = channel["walk"];
+    ASSERT_TRUE(walk.contains("exact_total_reflectance")) << walk.dump();
+    // 4 standard errors: three channels per run, each its own seed.
+    EXPECT_NEAR(walk["total_reflectance"].get<double>(), walk["exact_total_reflectance"].get<double>(),
+                4 * walk["std_error"].get<double>());
+    EXPECT_EQ(walk["profile"].size(), 6u);
+  }
+}
+
+TEST(ProfileCli, TextOutputNamesTheColumns) {
+  const ProcessResult run = runScatterlab({"profile", SCATTERLAB_DATA_DIR "/materials/subsurface-skin-burley.json",
+                                           "--reference", "walk", "--paths", "2000", "--bins", "3"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  for (const char* text : {"total diffuse reflectance", "random walk", "R_r profile", "R_b walk", "+- se"})
+    EXPECT_NE(run.out.find(text), std::string::npos) << text << " missing from:\n" << run.out;
+}
+
+struct BadProfileRun {
+  const char* what;
+  std::vector<std::string> args;
+  std::vector<std::string> messageContains;
+};
+void PrintTo(const BadProfileRun& b, std::ostream* os) { *os << b.what; }
+
+class BadProfileInput : public testing::TestWithParam<BadProfileRun> {};
+
+TEST_P(BadProfileInput, ExitsTwoWithAMessage) {
+  std::vector<std::string> args{"profile"};
+  args.insert(args.end(), GetParam().args.begin(), GetParam().args.end());
+  const ProcessResult run = runScatterlab(args);
+  EXPECT_EQ(run.exitCode, 2) << describe(run);
+  EXPECT_TRUE(run.out.empty()) << run.out;
+  for (const std::string& fragment : GetParam().messageContains)
+    EXPECT_NE(run.err.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << run.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ProfileCli, BadProfileInput,
+    testing::Values(
+        BadProfileRun{"negative coefficients", {R"({"type": "subsurface", "sigma_s": [1, -2, 1], "sigma_a": 0.1})"},
+                      {"\"sigma_s\"", "g = -2", ">= 0"}},
+        BadProfileRun{"reflectance outside [0, 1]", {R"({"type": "subsurface", "reflectance": 1.5, "mfp": 1})"},
+                      {"\"reflectance\"", "1.5", "[0, 1]"}},
+        BadProfileRun{"walk albedo outside [0, 1]", {R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "1.5"},
+                      {"--albedo", "1.5", "[0, 1]"}},
+        BadProfileRun{"eta zero", {R"({"type": "subsurface", "eta": 0})"}, {"\"eta\"", "(0, 4]"}},
+        BadProfileRun{"walk eta negative", {R"({"type": "subsurface"})", "--reference", "walk", "--eta", "-1"},
+                      {"--eta", "-1"}},
+        BadProfileRun{"zero mean free path", {R"({"type": "subsurface", "reflectance": 0.5, "mfp": 0})"},
+                      {"\"mfp\"", "> 0"}},
+        BadProfileRun{"unknown medium", {R"({"type": "subsurface", "medium": "Jelly"})"},
+                      {"\"medium\"", "\"Jelly\"", "\"Skin1\""}},
+        BadProfileRun{"a BSDF", {R"({"type": "lambertian"})"}, {"\"lambertian\"", "not a subsurface material"}},
+        BadProfileRun{"walk options without the walk", {R"({"type": "subsurface"})", "--albedo", "0.5"},
+                      {"--albedo", "--reference walk"}},
+        BadProfileRun{"two albedos", {R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "0.5,0.6"},
+                      {"--albedo", "three"}},
+        BadProfileRun{"unknown reference", {R"({"type": "subsurface"})", "--reference", "monte-carlo"}, {"--reference"}},
+        BadProfileRun{"radii the wrong way round", {R"({"type": "subsurface"})", "--min-radius", "5", "--max-radius", "1"},
+                      {"--min-radius", "--max-radius"}},
+        BadProfileRun{"missing file", {"no-such-material.json"}, {"no-such-material.json", "not found"}},
+        BadProfileRun{"no material", {}, {"material"}}));
+
+TEST(SubsurfaceCheckCli, ChecksASubsurfaceMaterialWithControls) {
+  const ProcessResult run =
+      runScatterlab({"check", R"({"type": "subsurface", "profile": "burley", "medium": "Marble"})", "--samples",
+                     "20000", "--grid", "16x32", "--negative-controls", "--json"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json out = json::parse(run.out);
+  EXPECT_TRUE(out["passed"].get<bool>());
+  std::set<std::string> tests;
+  for (const json& row : out["report"]["rows"]) tests.insert(row["test"].get<std::string>());
+  for (const char* test : {"profile energy (r)", "radius chi2 (g)", "radius consistency (b)", "radius inverse (r)",
+                           "directional normalisation", "probe chi2 (aligned frame)", "probe chi2 (tilted frame)",
+                           "control: radial shortcut pdf", "control: wrong channel weights"})
+    EXPECT_TRUE(tests.contains(test)) << test;
+  EXPECT_EQ(out["materials"][0]["material"]["eta"], 1.5);
+}
+
+TEST(SubsurfaceCheckCli, WritesTheChiSquareMapsOfEveryTest) {
+  const auto dir = uniquePath("subsurface-images");
+  const ProcessResult run = runScatterlab({"check", R"({"type": "subsurface"})", "--samples", "5000", "--grid", "8x16",
+                                           "--images", dir.string()});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name.find("radius_") != std::string::npos || name.find("probe_") != std::string::npos) << name;
+    ++files;
+  }
+  EXPECT_EQ(files, 5 * 4);  // 3 radius + 2 probe tests: observed, expected, residual, tables
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SubsurfaceCheckCli, BadSubsurfaceMaterialExitsTwo) {
+  const ProcessResult run = runScatterlab({"check", R"({"type": "subsurface", "sigma_s": 1, "sigma_a": -1})"});
+  EXPECT_EQ(run.exitCode, 2) << describe(run);
+  EXPECT_NE(run.err.find("\"sigma_a\""), std::string::npos) << run.err;
+}
+
+TEST(SubsurfaceModelsCli, ListsTheSubsurfaceModelAndItsMedia) {
+  const ProcessResult run = runScatterlab({"models"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  for (const char* text : {"subsurface", "beam-diffusion", "better-dipole", "\"Skin1\"", "\"Wholemilk\"", "burley_fit",
+                           "reflectance", "mfp", "roughness"})
+    EXPECT_NE(run.out.find(text), std::string::npos) << text;
+  const json catalog = json::parse(runScatterlab({"models", "--json"}).out);
+  bool found = false;
+  for (const json& model : catalog)
+    if (model["type"] == "subsurface") found = model["kind"] == "subsurface";
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace scatterlab

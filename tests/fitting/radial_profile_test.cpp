@@ -1,0 +1,139 @@
+// The one-dimensional problem of the BSSRDF profiles, with a profile defined here: Christensen
+// & Burley 2015's normalised diffusion R(r) = A (e^(-r/d) + e^(-r/(3d))) / (8 pi d r)
+// (REFERENCES.md), whose integral of 2 pi r R over r is A.
+#include <gtest/gtest.h>
+
+#include <ceres/autodiff_cost_function.h>
+#include <ceres/gradient_checker.h>
+#include <ceres/manifold.h>
+
+#include "fitting/radial_profile_fit.h"
+#include "materials/core/math.h"
+#include "materials/core/quadrature.h"
+#include "materials/core/rng.h"
+#include "materials/measured/measurement_synthesis.h"
+
+namespace scatterlab::fitting {
+namespace {
+
+struct BurleyProfile {
+  static constexpr int ParameterCount = 2;  // d (mm), A
+  template <typename T> T operator()(const T* p, double r) const {
+    using std::exp;
+    return p[1] * (exp(-r / p[0]) + exp(-r / (3.0 * p[0]))) / (8.0 * Pi * p[0] * r);
+  }
+};
+
+// Radii from 0.01 to 20 mm, geometrically spaced (the profile spans decades).
+std::vector<double> radii() {
+  std::vector<double> r;
+  for (int i = 0; i < 64; ++i) r.push_back(0.01 * std::pow(2000.0, i / 63.0));
+  return r;
+}
+
+std::vector<double> tabulate(double d, double a, const std::vector<double>& r) {
+  const double p[2] = {d, a};
+  std::vector<double> values;
+  for (const double x : r) values.push_back(BurleyProfile{}(p, x));
+  return values;
+}
+
+RadialFitOptions startingFarAway() {
+  RadialFitOptions options;
+  options.start = {3.0, 0.2};  // the truth is d = 0.8, A = 0.6
+  options.lower = {1e-3, 0.0};
+  options.upper = {100.0, 1.0};
+  return options;
+}
+
+TEST(RadialProfile, TheProfileIntegratesToAlbedo) {
+  // A check of the test's own profile: the integral of 2 pi r R(r) is A (Christensen & Burley
+  // 2015); adaptive Simpson over [0, 60 d], where the tail is below 1e-8 of the total.
+  // At r = 0 the integrand's limit is A / (2 d).
+  const double p[2] = {0.8, 0.6};
+  QuadratureOptions options;
+  options.relativeTolerance = 1e-10;
+  const double total = adaptiveSimpson(
+      [&](double r) { return r > 0 ? 2.0 * Pi * r * BurleyProfile{}(p, r) : 0.6 / (2.0 * 0.8); }, 0.0, 60.0 * 0.8, options);
+  EXPECT_NEAR(total, 0.6, 1e-7);
+}
+
+TEST(RadialProfile, GradientCheckOfTheProfileFunctor) {
+  using Residual = detail::RadialPointResidual<BurleyProfile>;
+  const BurleyProfile profile;
+  for (const double r : {0.01, 0.5, 5.0, 20.0}) {
+    ceres::AutoDiffCostFunction<Residual, 1, 2> cost(new Residual{&profile, r, 0.1, 1.0});
+    ceres::NumericDiffOptions numeric;
+    numeric.ridders_relative_initial_step_size = 1e-3;  // as in kernel_gradient_test.cpp
+    const ceres::GradientChecker checker(&cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), numeric);
+    std::vector<double> p{0.8, 0.6};
+    double* blocks[] = {p.data()};
+    ceres::GradientChecker::ProbeResults results;
+    EXPECT_TRUE(checker.Probe(blocks, 1e-6, &results)) << "r " << r << ": " << results.error_log;
+  }
+}
+
+// Noise-free values are recovered from a distant start, with every weighting; the optimum is
+// exact, so only convergence limits the error (1e-8 relative).
+TEST(RadialProfile, RecoversDiffusionLengthAndAlbedoFromNoiseFreeValues) {
+  const std::vector<double> r = radii();
+  const std::vector<double> values = tabulate(0.8, 0.6, r);
+  for (const RadialWeighting weighting : {RadialWeighting::Plain, RadialWeighting::Area, RadialWeighting::Relative}) {
+    RadialFitOptions options = startingFarAway();
+    options.weighting = weighting;
+    const RadialFitResult fit = fitRadialProfile(BurleyProfile{}, r, values, options);
+    EXPECT_TRUE(fit.converged) << fit.message;
+    EXPECT_NEAR(fit.parameters[0], 0.8, 1e-8 * 0.8) << int(weighting);
+    EXPECT_NEAR(fit.parameters[1], 0.6, 1e-8 * 0.6) << int(weighting);
+  }
+}
+
+// With 2% multiplicative noise and the Relative weighting (whose weights are then the inverse
+// noise standard deviations, as the error bars assume), the truth falls within the reported
+// error bars at the expected rate: the sum over seeds of the squared standardised errors of
+// both parameters (correlated, so this is a loose check next to noise_coverage_test's
+// Mahalanobis test) stays within the central 99.9% of chi^2 with 2 x seeds degrees of freedom
+// if the parameters were independent; their correlation widens that, so the band is doubled.
+TEST(RadialProfile, ErrorBarsCoverTheTruthUnderNoise) {
+  const std::vector<double> r = radii();
+  const std::vector<double> clean = tabulate(0.8, 0.6, r);
+  constexpr int Seeds = 20;
+  double sum = 0;
+  int within2 = 0;
+  for (int seed = 1; seed <= Seeds; ++seed) {
+    std::vector<double> noisy = clean;
+    CounterRng rng(uint64_t(seed), 0);
+    for (double& v : noisy) {
+      const double u0 = rng.uniform();
+      v *= 1.0 + 0.02 * standardNormal(u0, rng.uniform());
+    }
+    RadialFitOptions options = startingFarAway();
+    options.weighting = RadialWeighting::Relative;
+    const RadialFitResult fit = fitRadialProfile(BurleyProfile{}, r, noisy, options);
+    ASSERT_TRUE(fit.covarianceAvailable);
+    for (int k = 0; k < 2; ++k) {
+      const double z = (fit.parameters[size_t(k)] - (k == 0 ? 0.8 : 0.6)) / fit.standardDeviations[size_t(k)];
+      sum += z * z;
+      within2 += std::abs(z) <= 2.0;
+    }
+  }
+  std::printf("sum of squared standardised errors over %d seeds: %.1f (expected about %d); within 2 sd: %d of %d\n", Seeds,
+              sum, 2 * Seeds, within2, 2 * Seeds);
+  EXPECT_GT(sum, 0.25 * 2 * Seeds);
+  EXPECT_LT(sum, 2.5 * 2 * Seeds);
+  EXPECT_GE(within2, int(0.8 * 2 * Seeds));
+}
+
+TEST(RadialProfile, BadInputIsRefused) {
+  const std::vector<double> r = radii();
+  const std::vector<double> values = tabulate(0.8, 0.6, r);
+  RadialFitOptions options = startingFarAway();
+  EXPECT_THROW(fitRadialProfile(BurleyProfile{}, std::span(r).first(1), std::span(values).first(1), options),
+               std::invalid_argument);
+  EXPECT_THROW(fitRadialProfile(BurleyProfile{}, r, std::span(values).first(10), options), std::invalid_argument);
+  options.start = {1.0};
+  EXPECT_THROW(fitRadialProfile(BurleyProfile{}, r, values, options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace scatterlab::fitting
