@@ -51,18 +51,6 @@ CLI::Validator resolutionValidator() {
       "WxH");
 }
 
-CLI::Validator oneOf(const std::vector<std::string>& choices) {
-  std::string allowed;
-  for (const std::string& choice : choices) allowed += (allowed.empty() ? "" : ", ") + choice;
-  return CLI::Validator(
-      [choices, allowed](std::string& text) -> std::string {
-        for (const std::string& choice : choices)
-          if (text == choice) return "";
-        return inQuotes(text) + " is not allowed; allowed: one of " + allowed;
-      },
-      "{" + allowed + "}");
-}
-
 struct MaterialToRender {
   std::string label;
   json completed;
@@ -115,20 +103,15 @@ struct OutputPaths {
   fs::path exr, png;
 };
 
-// PREFIX.exr and PREFIX.png in an existing, writable directory, neither a directory.
+// PREFIX.exr and PREFIX.png, neither a directory, in an existing, writable directory.
 OutputPaths checkOutput(const std::string& prefix) {
-  const std::string allowed = "; allowed: a path prefix in an existing, writable directory, e.g. out/gold";
-  if (prefix.empty()) throw InputError("--out: missing" + allowed);
-  const fs::path base(prefix);
-  const fs::path directory = base.parent_path().empty() ? fs::path(".") : base.parent_path();
-  std::error_code error;
-  if (!fs::is_directory(directory, error))
-    throw InputError("--out: directory " + inQuotes(directory.string()) + " does not exist" + allowed);
-  if (::access(directory.c_str(), W_OK) != 0)
-    throw InputError("--out: directory " + inQuotes(directory.string()) + " is not writable" + allowed);
+  if (prefix.empty()) throw InputError("--out: missing; allowed: a path prefix, e.g. out/gold");
   OutputPaths paths{fs::path(prefix + ".exr"), fs::path(prefix + ".png")};
-  for (const fs::path& path : {paths.exr, paths.png})
-    if (fs::is_directory(path, error)) throw InputError("--out: " + inQuotes(path.string()) + " is a directory" + allowed);
+  checkOutputFile("--out", paths.exr.string(), "out/gold (for out/gold.exr and out/gold.png)");
+  checkOutputFile("--out", paths.png.string(), "out/gold (for out/gold.exr and out/gold.png)");
+  const fs::path directory = paths.exr.parent_path().empty() ? fs::path(".") : paths.exr.parent_path();
+  if (::access(directory.c_str(), W_OK) != 0)
+    throw InputError("--out: directory " + inQuotes(directory.string()) + " is not writable; allowed: a writable directory");
   return paths;
 }
 
@@ -185,7 +168,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->required();
   command->add_option("--scene", options.scene, "Built-in scene: sphere (the peers' material sphere) or preview "
                                                 "(on a checkered ground)")
-      ->check(oneOf(scenePresetNames()))
+      ->check(choiceOf(scenePresetNames(), "a scene"))
       ->capture_default_str();
   command->add_option("--env", options.env,
                       "Environment: white (constant radiance 1, the furnace) or an equirectangular OpenEXR map "
@@ -223,10 +206,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
   command->add_option("--estimator", options.estimator,
                       "mis (NEE + BSDF sampling, power heuristic), bsdf (BSDF sampling only) or light (light "
                       "sampling only for direct light): for checking that they agree")
-      ->check(oneOf({"mis", "bsdf", "light"}))
+      ->check(choiceOf({"mis", "bsdf", "light"}, "an estimator"))
       ->capture_default_str();
   command->add_option("--filter", options.filter, "Pixel filter: box (1 pixel) or gaussian (sigma 0.5, radius 1.5 px)")
-      ->check(oneOf({"box", "gaussian"}))
+      ->check(choiceOf({"box", "gaussian"}, "a filter"))
       ->capture_default_str();
   command->add_option("--exposure", options.exposure, "PNG exposure in stops (x 2^EV before sRGB encoding)")
       ->type_name("EV")
@@ -234,7 +217,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->capture_default_str();
   command->add_option("--layers", options.layers, "Extra EXR layers: albedo, normal, variance (single material only)")
       ->delimiter(',')
-      ->check(oneOf({"albedo", "normal", "variance"}));
+      ->check(choiceOf({"albedo", "normal", "variance"}, "a layer"));
   command->add_option("--label", options.labels, "Gallery label per material, in order (default: file name or type)");
   command->add_option("--columns", options.columns, "Gallery columns (0: a square-ish grid)")
       ->type_name("N")

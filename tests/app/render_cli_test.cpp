@@ -147,9 +147,9 @@ TEST_F(RenderCliBadInput, Resolutions) {
 TEST_F(RenderCliBadInput, SamplesAndSettings) {
   expectBadInput(with({"--spp", "0"}), {"--spp", "\"0\"", "[1, "}, prefix);
   expectBadInput(with({"--spp", "-3"}), {"--spp"}, prefix);
-  expectBadInput(with({"--scene", "cornell"}), {"--scene", "\"cornell\"", "sphere, preview"}, prefix);
-  expectBadInput(with({"--estimator", "guess"}), {"--estimator", "mis, bsdf, light"}, prefix);
-  expectBadInput(with({"--layers", "depth"}), {"--layers", "\"depth\"", "albedo, normal, variance"}, prefix);
+  expectBadInput(with({"--scene", "cornell"}), {"--scene", "\"cornell\"", "\"sphere\", \"preview\""}, prefix);
+  expectBadInput(with({"--estimator", "guess"}), {"--estimator", "\"mis\", \"bsdf\", \"light\""}, prefix);
+  expectBadInput(with({"--layers", "depth"}), {"--layers", "\"depth\"", "\"albedo\", \"normal\", \"variance\""}, prefix);
   expectBadInput(with({"--env-strength", "nan"}), {"--env-strength", "\"nan\""}, prefix);
 }
 
