@@ -16,6 +16,7 @@
 #include "app/lab/measured_section.h"
 #include "app/lab/phase_timer.h"
 #include "app/lab/plots_section.h"
+#include "app/lab/renders_section.h"
 #include "app/lab/report_page.h"
 #include "app/lab/staged_directory.h"
 #include "app/lab/subsurface_section.h"
@@ -45,9 +46,10 @@ std::string rgbText(const Rgb& c, int digits = 3) {
 // Everything one material's report holds, phase by phase.
 class MaterialReporter {
  public:
-  MaterialReporter(const LabMaterial& material, const LabSettings& settings, const fs::path& reportDir,
-                   PhaseTimer& timer, ProgressLine& progress, const std::string& step)
-      : m_(material), settings_(settings), dir_(reportDir / material.folder), timer_(timer),
+  MaterialReporter(const LabMaterial& material, const LabSettings& settings,
+                   const std::vector<LabEnvironment>& environments, const fs::path& reportDir, PhaseTimer& timer,
+                   ProgressLine& progress, const std::string& step)
+      : m_(material), settings_(settings), environments_(environments), dir_(reportDir / material.folder), timer_(timer),
         progress_(progress.callback(step + " " + material.name)) {
     fs::create_directories(dir_);
     report_.name = m_.name;
@@ -65,6 +67,7 @@ class MaterialReporter {
     report_.sections.push_back(checkSection(m_, outcome, dir_));
     if (m_.bsdf) addBsdfSections();
     if (m_.subsurface) addSubsurfaceSection();
+    addRendersSection();
     return std::move(report_);
   }
 
@@ -121,8 +124,19 @@ class MaterialReporter {
     report_.keyNumbers.push_back({"Rd random walk", rgbText(walk) + " (largest difference " + html::number(worst, 3) + " se)"});
   }
 
+  // Every material goes to the renderer, which decides what it can render (renders_section.h).
+  void addRendersSection() {
+    ReportSection renders = timer_.time("render", m_.name, [&] {
+      return rendersSection(m_, m_.table ? &fits_ : nullptr, settings_, environments_, dir_, progress_);
+    });
+    if (const std::string refusal = renderRefusal(renders); !refusal.empty())
+      report_.keyNumbers.push_back({"renders", "not rendered: " + refusal});
+    report_.sections.push_back(std::move(renders));
+  }
+
   const LabMaterial& m_;
   const LabSettings& settings_;
+  const std::vector<LabEnvironment>& environments_;
   fs::path dir_;
   PhaseTimer& timer_;
   ProgressCallback progress_;
@@ -136,6 +150,7 @@ std::string commandLine(const LabCommandOptions& options) {
   for (const std::string& material : options.materials) line += " '" + material + "'";
   line += " --out '" + options.out + "'";
   if (options.quick) line += " --quick";
+  for (const std::string& environment : options.environments) line += " --env '" + environment + "'";
   line += " --seed " + std::to_string(options.seed);
   return line;
 }
@@ -176,6 +191,10 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
       ->type_name("INTEGER")
       ->transform(integerIn(0))
       ->capture_default_str();
+  command->add_option("--env", options.environments,
+                      "Environment maps for the renders (equirectangular OpenEXR, width = 2 x height); default: "
+                      "studio.exr and courtyard.exr of data/envmaps")
+      ->type_name("FILE");
   command->add_flag("--json", options.json, "Print the verdicts, the report's path and the timings as JSON");
   return command;
 }
@@ -185,6 +204,8 @@ int runLabCommand(const LabCommandOptions& options) {
   std::vector<LabMaterial> materials;
   for (const std::string& argument : options.materials) materials.push_back(loadLabMaterial(argument));
   makeNamesUnique(materials);
+  const std::vector<LabEnvironment> environments = loadLabEnvironments(
+      options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments);
   StagedDirectory staged(options.out, ReportMarkerFile, ReportGenerator, "--out");
 
   const LabSettings settings = options.quick ? LabSettings::quickMode(options.seed) : LabSettings::fullMode(options.seed);
@@ -196,7 +217,7 @@ int runLabCommand(const LabCommandOptions& options) {
   std::vector<MaterialReport> reports;
   for (size_t i = 0; i < materials.size(); ++i) {
     const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "]";
-    reports.push_back(MaterialReporter(materials[i], settings, staged.path(), timer, progress, step).run());
+    reports.push_back(MaterialReporter(materials[i], settings, environments, staged.path(), timer, progress, step).run());
   }
   std::error_code error;
   fs::remove_all(staged.path() / "scratch", error);  // tables of a showcase that had no cache directory

@@ -17,6 +17,7 @@ struct LabCommandOptions {
   std::string out = "lab-report";
   bool quick = false;
   uint64_t seed = 1;
+  std::vector<std::string> environments;  // equirectangular EXR maps for the renders; none: two of data/envmaps
   bool json = false;
 };
 

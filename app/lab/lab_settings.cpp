@@ -41,6 +41,8 @@ LabSettings LabSettings::quickMode(uint64_t seed) {
   s.fitStarts = 2;
   s.fitGridSamples = 10000;
   s.fitStartSamples = 0;  // the whole subset: no separate refinement
+  s.renderSize = 128;
+  s.renderSpp = 16;
   return s;
 }
 
@@ -57,6 +59,8 @@ LabSettings LabSettings::fullMode(uint64_t seed) {
   s.albedoProbeSamples = 100000;
   s.walkPaths = 2000000;
   s.fitSamples = 0;
+  s.renderSize = 256;
+  s.renderSpp = 64;
   return s;
 }
 
@@ -79,7 +83,8 @@ nlohmann::json LabSettings::toJson() const {
           {"walk_paths_per_channel", walkPaths},
           {"fits", {{"families", fitFamilies}, {"samples", fitSamples}, {"grid_points", fitGridPoints},
                     {"starts", fitStarts}, {"grid_samples", fitGridSamples}, {"start_samples", fitStartSamples}}},
-          {"profile_bins", profileBins}};
+          {"profile_bins", profileBins},
+          {"renders", {{"size", renderSize}, {"samples_per_pixel", renderSpp}, {"max_depth", renderMaxDepth}}}};
 }
 
 }  // namespace scatterlab

@@ -52,6 +52,10 @@ struct LabSettings {
   int fitGridPoints = 256, fitStarts = 3;
   size_t fitGridSamples = 20000, fitStartSamples = 100000;  // fitting/brdf_fit.h FitOptions
 
+  int renderSize = 128;  // square renders of the material sphere (renders_section.h)
+  int renderSpp = 16;
+  int renderMaxDepth = 12;
+
   static LabSettings quickMode(uint64_t seed);
   static LabSettings fullMode(uint64_t seed);
   nlohmann::json toJson() const;
