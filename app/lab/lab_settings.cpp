@@ -41,8 +41,8 @@ LabSettings LabSettings::quickMode(uint64_t seed) {
   s.fitStarts = 2;
   s.fitGridSamples = 10000;
   s.fitStartSamples = 0;  // the whole subset: no separate refinement
-  s.renderSize = 128;
-  s.renderSpp = 16;
+  s.renderSize = 160;
+  s.renderSpp = 64;
   return s;
 }
 
@@ -60,7 +60,7 @@ LabSettings LabSettings::fullMode(uint64_t seed) {
   s.walkPaths = 2000000;
   s.fitSamples = 0;
   s.renderSize = 256;
-  s.renderSpp = 64;
+  s.renderSpp = 128;
   return s;
 }
 

@@ -15,6 +15,9 @@
 //                         on a 30,000-cell stratified   on every usable cell (about 1e6)
 //                         subset, 128 grid points,      256 grid points, 3 starts
 //                         2 starts
+// renders (2 maps; a      160 x 160, 64 spp             256 x 256, 128 spp
+// measured material
+// and its 4 fits each)
 #pragma once
 
 #include <cstddef>
@@ -52,8 +55,8 @@ struct LabSettings {
   int fitGridPoints = 256, fitStarts = 3;
   size_t fitGridSamples = 20000, fitStartSamples = 100000;  // fitting/brdf_fit.h FitOptions
 
-  int renderSize = 128;  // square renders of the material sphere (renders_section.h)
-  int renderSpp = 16;
+  int renderSize = 160;  // square renders of the material sphere (renders_section.h)
+  int renderSpp = 64;
   int renderMaxDepth = 12;
 
   static LabSettings quickMode(uint64_t seed);

@@ -8,7 +8,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/lab/html.h"
 #include "cli_runner.h"
+#include "integrator/scene_presets.h"
+#include "materials/bsdf/registry.h"
 
 namespace scatterlab {
 namespace {
@@ -80,6 +83,58 @@ TEST(LabCli, BadInputLeavesTheOutputDirectoryAlone) {
 
   const fs::path file = out / "thesis.tex";
   expectBadInput({"lab", R"({"type": "lambertian"})", "--out", file.string()}, {"--out", "not a directory"});
+}
+
+TEST(LabCli, AnUnreadableEnvironmentMapIsBadInputAndTheLastReportStays) {
+  const fs::path out = uniquePath("lab-bad-env");
+  const std::vector<std::string> lambertian{"lab", R"({"type": "lambertian"})", "--quick", "--out", out.string()};
+  const fs::path missing = uniquePath("lab-bad-env-missing") / "studio.exr";
+  expectBadInput(lambertian + std::vector<std::string>{"--env", missing.string()}, {"--env", missing.string()});
+  EXPECT_FALSE(fs::exists(out));
+
+  ASSERT_EQ(runScatterlab(lambertian).exitCode, 0);
+  const std::string before = readFile(out / "index.html");
+  const fs::path notExr = out.string() + "-not.exr";
+  std::ofstream(notExr) << "not an OpenEXR file";
+  expectBadInput(lambertian + std::vector<std::string>{"--env", notExr.string()}, {"--env", notExr.string()});
+  EXPECT_EQ(readFile(out / "index.html"), before);
+}
+
+// The report renders what the renderer accepts and shows the renderer's message for what it
+// refuses; which of the two a subsurface material is, the integrator says (today it refuses
+// BSSRDFs; once it renders them, this test expects their pictures).
+TEST(LabCli, EveryMaterialGoesToTheRenderer) {
+  const json subsurface{{"type", "subsurface"}};  // the default medium: a short random walk
+  std::string refusal;
+  try {
+    makePresetScene(ScenePreset::MaterialSphere, subsurface, Environment::constant(Rgb(1.0)), 8, 8);
+  } catch (const MaterialError& error) {
+    refusal = error.what();
+  }
+  const fs::path out = uniquePath("lab-renders");
+  const ProcessResult run =
+      runScatterlab({"lab", R"({"type": "lambertian"})", subsurface.dump(), "--quick", "--out", out.string()});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json report = json::parse(readFile(out / "report.json"));
+  ASSERT_EQ(report["materials"].size(), 2u);
+  const auto rendersOf = [&](size_t i) {
+    return json::parse(readFile(out / report["materials"][i]["data"].get<std::string>()))["sections"]["renders"]["data"];
+  };
+  const json lambertian = rendersOf(0);
+  EXPECT_EQ(lambertian["renders"].size(), 2u);  // the two default environment maps
+  EXPECT_TRUE(lambertian["refused"].empty());
+  const json marble = rendersOf(1);
+  const std::string page = readFile(out / "index.html");
+  if (refusal.empty()) {
+    EXPECT_EQ(marble["renders"].size(), 2u);
+    EXPECT_TRUE(marble["refused"].empty());
+  } else {
+    EXPECT_TRUE(marble["renders"].empty());
+    ASSERT_EQ(marble["refused"].size(), 1u);
+    EXPECT_EQ(marble["refused"][0]["message"], refusal);
+    expectMentions(page, {"class=\"render-refused\"", "not rendered: "});
+    expectMentions(page, {html::escape(refusal)});
+  }
 }
 
 }  // namespace
