@@ -1,7 +1,8 @@
 // The lab report in a real browser (issue 8): opens DIR/index.html from the file system in
 // Debian's headless Chromium, driven by playwright-core (both installed by scripts/setup), and
 // checks that every image loaded, every chart was drawn by Chart.js with data on a canvas that
-// is not blank, and that the page logged no console error and no request failed. Saves a
+// is not blank, that every material has its renders or the renderer's message in their place,
+// and that the page logged no console error and no request failed. Saves a
 // full-page screenshot beside the report (DIR/../report-screenshot.png, or SCREENSHOT).
 //
 // Usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N]
@@ -102,8 +103,24 @@ try {
     if (failed.colour !== 'rgb(207, 34, 46)') fail('failed material ' + failed.id + ' badge is not red: ' + failed.colour);
   }
 
+  // Every material has its renders: pictures, or the renderer's message where it refused one.
+  const renders = await page.evaluate(() => Array.from(document.querySelectorAll('article.material')).map((a) => {
+    const section = a.querySelector('section.part-renders');
+    if (!section) return { id: a.id, section: false };
+    const refusals = Array.from(section.querySelectorAll('.render-refused'));
+    return { id: a.id, section: true, images: section.querySelectorAll('figure.render img').length,
+             refusals: refusals.map((r) => ({ text: (r.querySelector('code') || r).textContent.trim(),
+                                               visible: r.getBoundingClientRect().height > 0 })) };
+  }));
+  for (const r of renders) {
+    if (!r.section) { fail('material ' + r.id + ' has no renders section'); continue; }
+    if (r.images === 0 && r.refusals.length === 0) fail('material ' + r.id + ' has neither renders nor the renderer\'s message');
+    for (const refusal of r.refusals)
+      if (!refusal.text || !refusal.visible) fail('material ' + r.id + ': a refused render without a visible message');
+  }
+
   await page.screenshot({ path: screenshot, fullPage: true });
-  console.log(JSON.stringify({ index, screenshot, images: images.length, charts: charts.length, verdicts,
+  console.log(JSON.stringify({ index, screenshot, images: images.length, charts: charts.length, verdicts, renders,
                                points: charts.reduce((n, c) => n + (c.points || 0), 0) }));
 } finally {
   await context.close();
