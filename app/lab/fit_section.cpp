@@ -33,8 +33,7 @@ std::optional<double> truthOf(const LabMaterial& material, const FitModel& model
 }
 
 std::string relativeErrorText(const FitResult& r) {
-  return html::number(r.relativeError.x, 3) + ", " + html::number(r.relativeError.y, 3) + ", " +
-         html::number(r.relativeError.z, 3);
+  return html::rgb(r.relativeError);
 }
 
 std::string summaryTable(const MaterialFits& fits) {
@@ -50,7 +49,7 @@ std::string summaryTable(const MaterialFits& fits) {
         html::element("td", html::textElement("b", f.name) + html::element("br", "") + html::textElement("code", f.spec)) +
             html::textElement("td", std::to_string(r.parameters.size()), {{"class", "num"}}) +
             html::textElement("td", relativeErrorText(r), {{"class", "num"}}) +
-            html::textElement("td", html::number(r.rms.x, 3) + ", " + html::number(r.rms.y, 3) + ", " + html::number(r.rms.z, 3),
+            html::textElement("td", html::rgb(r.rms),
                               {{"class", "num"}}) +
             html::textElement("td", std::to_string(r.final.iterations), {{"class", "num"}}) +
             html::textElement("td", html::number(r.seconds, 3), {{"class", "num"}}) +

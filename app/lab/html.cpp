@@ -49,6 +49,10 @@ std::string number(double value, int significant) {
   return buffer;
 }
 
+std::string rgb(const Rgb& c, int significant) {
+  return number(c.x, significant) + ", " + number(c.y, significant) + ", " + number(c.z, significant);
+}
+
 std::string degrees(double value, int significant) { return number(value, significant) + "\u00b0"; }
 
 std::string jsonForScript(std::string_view json) {

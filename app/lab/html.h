@@ -8,6 +8,8 @@
 #include <string_view>
 #include <utility>
 
+#include "materials/core/math.h"
+
 namespace scatterlab::html {
 
 // Text for an element's content or an attribute value: & < > " ' escaped.
@@ -26,6 +28,9 @@ std::string textElement(std::string_view tag, std::string_view text, Attributes 
 // A number for tables: `significant` significant digits, no trailing noise ("0.0312",
 // "1.2e-05"); "-" for NaN, "inf" for infinity.
 std::string number(double value, int significant = 4);
+
+// Three numbers (an RGB triple) for tables and captions: "0.0576, 0.05, 0.0324".
+std::string rgb(const Rgb& c, int significant = 3);
 
 // An angle for captions: number(value, significant) and a degree sign.
 std::string degrees(double value, int significant = 3);

@@ -39,10 +39,6 @@ std::string utcNow() {
   return buffer;
 }
 
-std::string rgbText(const Rgb& c, int digits = 3) {
-  return html::number(c.x, digits) + ", " + html::number(c.y, digits) + ", " + html::number(c.z, digits);
-}
-
 // Everything one material's report holds, phase by phase.
 class MaterialReporter {
  public:
@@ -81,7 +77,7 @@ class MaterialReporter {
     if (!albedo.empty()) {
       const json& first = albedo.front()["albedo_rgb"];
       report_.keyNumbers.push_back(
-          {"albedo at normal incidence", rgbText(Rgb(first[0].get<double>(), first[1].get<double>(), first[2].get<double>()))});
+          {"albedo at normal incidence", html::rgb(Rgb(first[0].get<double>(), first[1].get<double>(), first[2].get<double>()))});
     }
     report_.sections.push_back(std::move(plots));
     if (m_.table) {
@@ -120,8 +116,8 @@ class MaterialReporter {
       se[c] = comparison.walk[size_t(c)].totalStdError;
       if (se[c] > 0) worst = std::max(worst, std::abs(comparison.profileTotal[c] - walk[c]) / se[c]);
     }
-    report_.keyNumbers.push_back({"Rd profile", rgbText(comparison.profileTotal)});
-    report_.keyNumbers.push_back({"Rd random walk", rgbText(walk) + " (largest difference " + html::number(worst, 3) + " se)"});
+    report_.keyNumbers.push_back({"Rd profile", html::rgb(comparison.profileTotal)});
+    report_.keyNumbers.push_back({"Rd random walk", html::rgb(walk) + " (largest difference " + html::number(worst, 3) + " se)"});
   }
 
   // Every material goes to the renderer, which decides what it can render (renders_section.h).

@@ -60,7 +60,7 @@ LabSettings LabSettings::fullMode(uint64_t seed) {
   s.walkPaths = 2000000;
   s.fitSamples = 0;
   s.renderSize = 256;
-  s.renderSpp = 128;
+  s.renderSpp = 256;
   return s;
 }
 

@@ -15,7 +15,7 @@
 //                         on a 30,000-cell stratified   on every usable cell (about 1e6)
 //                         subset, 128 grid points,      256 grid points, 3 starts
 //                         2 starts
-// renders (2 maps; a      160 x 160, 64 spp             256 x 256, 128 spp
+// renders (2 maps; a      160 x 160, 64 spp             256 x 256, 256 spp
 // measured material
 // and its 4 fits each)
 #pragma once

@@ -109,6 +109,16 @@ std::string refusalBox(const std::string& label, const std::string& message) {
                        {{"class", "render-refused"}});
 }
 
+// A render and its sphere's statistics.
+struct Rendered {
+  RenderResult result;
+  RegionStatistics sphere;
+};
+
+// The files of subject `key` under environment `env`: STEM.png and STEM.exr.
+std::string renderStem(const std::string& env, const std::string& key) { return "render_" + env + "_" + key; }
+std::string differenceStem(const std::string& env, const std::string& key) { return "difference_" + env + "_" + key; }
+
 std::vector<Subject> subjectsOf(const LabMaterial& material, const MaterialFits* fits) {
   std::vector<Subject> subjects{{material.name, "material", material.description, ""}};
   if (fits)
@@ -134,8 +144,10 @@ std::vector<LabEnvironment> loadLabEnvironments(const std::vector<std::string>& 
       json description{{"file", file},
                        {"size", {map.image.width(), map.image.height()}},
                        {"clamped_negative_values", map.clampedNegatives}};
-      environments.push_back(
-          {fs::path(file).stem().string(), file, Environment::fromMap(std::move(map.image)), std::move(description)});
+      std::string name = fs::path(file).stem().string();
+      for (const LabEnvironment& other : environments)
+        if (other.name == name) name += "-" + std::to_string(environments.size() + 1);  // file names stay apart
+      environments.push_back({name, file, Environment::fromMap(std::move(map.image)), std::move(description)});
     } catch (const RenderInputError& error) {
       throw InputError(std::string("--env: ") + error.what());
     }
@@ -164,7 +176,7 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
 
   const std::vector<Subject> subjects = subjectsOf(material, fits);
   // results[s][e]: subject s under environment e; empty when the renderer refused s.
-  std::vector<std::vector<RenderResult>> results(subjects.size());
+  std::vector<std::vector<Rendered>> results(subjects.size());
   json refused = json::array(), renders = json::array();
   std::string refusals;
   std::optional<SilhouetteMask> mask;
@@ -194,17 +206,18 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
         if (progress) progress(stage, fraction);
       });
       const RegionStatistics sphere = regionStatistics(result.color, *mask, PixelRegion::Sphere);
+      const std::string stem = renderStem(environments[e].name, subject.key);
       renders.push_back({{"label", subject.label},
                          {"subject", subject.key},
                          {"environment", environments[e].name},
-                         {"image", "render_" + environments[e].name + "_" + subject.key + ".png"},
-                         {"exr", "render_" + environments[e].name + "_" + subject.key + ".exr"},
+                         {"image", stem + ".png"},
+                         {"exr", stem + ".exr"},
                          {"sphere_mean_rgb", rgbJson(sphere.meanRgb)},
                          {"sphere_pixels", sphere.pixels},
                          {"seconds", result.statistics.seconds},
                          {"samples", result.statistics.samples},
                          {"non_finite_samples", result.statistics.nonFiniteSamples}});
-      results[s].push_back(std::move(result));
+      results[s].push_back({std::move(result), sphere});
     }
   }
 
@@ -214,10 +227,10 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
   const std::string base = material.folder + "/";
   for (size_t e = 0; e < environments.size(); ++e) {
     const std::string& env = environments[e].name;
-    const RenderResult* reference = results.front().empty() ? nullptr : &results.front()[e];
+    const RenderResult* reference = results.front().empty() ? nullptr : &results.front()[e].result;
     const RenderResult* exposed = reference;
     for (size_t s = 0; !exposed && s < results.size(); ++s)
-      if (!results[s].empty()) exposed = &results[s][e];
+      if (!results[s].empty()) exposed = &results[s][e].result;
     if (!exposed) break;
     const double exposure = exposureFor(exposed->color);
     json environmentJson = environments[e].description;
@@ -227,21 +240,19 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
     std::string figures;
     for (size_t s = 0; s < subjects.size(); ++s) {
       if (results[s].empty()) continue;
-      const RenderResult& result = results[s][e];
-      const std::string name = "render_" + env + "_" + subjects[s].key;
+      const RenderResult& result = results[s][e].result;
+      const std::string name = renderStem(env, subjects[s].key);
       writePngSrgb(materialDir / (name + ".png"), result.color, exposure);
       writeExr(materialDir / (name + ".exr"), {{"", {"R", "G", "B"}, &result.color}, {"variance", {"R", "G", "B"}, &result.variance}});
-      const RegionStatistics sphere = regionStatistics(result.color, *mask, PixelRegion::Sphere);
       figures += figure(base + name + ".png", subjects[s].label + " under " + env,
                         html::textElement("b", s == 0 ? subjects[s].label : "fit: " + subjects[s].label) +
                             html::element("br", "") +
-                            html::escape("sphere mean " + html::number(sphere.meanRgb.x, 3) + ", " +
-                                         html::number(sphere.meanRgb.y, 3) + ", " + html::number(sphere.meanRgb.z, 3)));
+                            html::escape("sphere mean " + html::rgb(results[s][e].sphere.meanRgb)));
       if (s == 0 || !reference) continue;
       Image difference;
       const DifferenceNumbers numbers =
           differenceOver(reference->color, result.color, reference->variance, result.variance, *mask, difference);
-      const std::string diffName = "difference_" + env + "_" + subjects[s].key;
+      const std::string diffName = differenceStem(env, subjects[s].key);
       writePngSrgb(materialDir / (diffName + ".png"), absolute(difference), exposure + std::log2(DifferenceGain));
       writeExr(materialDir / (diffName + ".exr"), {{"", {"R", "G", "B"}, &difference}});
       differences.push_back({{"environment", env},
