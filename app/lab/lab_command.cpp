@@ -189,8 +189,9 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
       ->capture_default_str();
   command->add_option("--env", options.environments,
                       "Environment maps for the renders (equirectangular OpenEXR, width = 2 x height); default: "
-                      "studio.exr and courtyard.exr of data/envmaps")
-      ->type_name("FILE");
+                      "studio.exr and courtyard.exr of data/envmaps; repeat for more")
+      ->type_name("FILE")
+      ->allow_extra_args(false);  // one file per --env: a MATERIAL after it stays a material
   command->add_flag("--json", options.json, "Print the verdicts, the report's path and the timings as JSON");
   return command;
 }

@@ -27,7 +27,7 @@ constexpr const char* WhiteRoughDisney = R"({"type": "disney", "baseColor": [1, 
 TEST(LabCli, HelpListsEveryOption) {
   const ProcessResult run = runScatterlab({"lab", "--help"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
-  expectMentions(run.out, {"--out", "--quick", "--seed", "--json", "showcase"});
+  expectMentions(run.out, {"--out", "--quick", "--seed", "--env", "--json", "showcase"});
 }
 
 TEST(LabCli, AFailingMaterialGetsAReportThatShowsTheFailure) {
@@ -75,6 +75,14 @@ TEST(LabCli, BadInputLeavesTheOutputDirectoryAlone) {
   expectBadInput({"lab", (out / "missing.json").string(), "--out", out.string()}, {"missing.json"});
   expectBadInput({"lab", (out / "missing.binary").string(), "--out", out.string()}, {"missing.binary"});
   EXPECT_FALSE(fs::exists(out));
+  // Unreadable contents: a truncated MERL table, a JSON file that does not parse.
+  const fs::path inputs = uniquePath("lab-bad-inputs");
+  fs::create_directories(inputs);
+  std::ofstream(inputs / "short.binary") << "garbage";
+  std::ofstream(inputs / "broken.json") << "{not json";
+  expectBadInput({"lab", (inputs / "short.binary").string(), "--out", out.string()}, {"short.binary", "truncated"});
+  expectBadInput({"lab", (inputs / "broken.json").string(), "--out", out.string()}, {"broken.json", "line 1"});
+  EXPECT_FALSE(fs::exists(out));
 
   fs::create_directories(out);
   std::ofstream(out / "thesis.tex") << "years of work";
@@ -112,8 +120,10 @@ TEST(LabCli, EveryMaterialGoesToTheRenderer) {
     refusal = error.what();
   }
   const fs::path out = uniquePath("lab-renders");
-  const ProcessResult run =
-      runScatterlab({"lab", R"({"type": "lambertian"})", subsurface.dump(), "--quick", "--out", out.string()});
+  // One map (a material after --env is a material, not a second map).
+  const std::string studio = std::string(SCATTERLAB_DATA_DIR) + "/envmaps/studio.exr";
+  const ProcessResult run = runScatterlab(
+      {"lab", "--env", studio, R"({"type": "lambertian"})", subsurface.dump(), "--quick", "--out", out.string()});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(readFile(out / "report.json"));
   ASSERT_EQ(report["materials"].size(), 2u);
@@ -121,17 +131,18 @@ TEST(LabCli, EveryMaterialGoesToTheRenderer) {
     return json::parse(readFile(out / report["materials"][i]["data"].get<std::string>()))["sections"]["renders"]["data"];
   };
   const json lambertian = rendersOf(0);
-  EXPECT_EQ(lambertian["renders"].size(), 2u);  // the two default environment maps
+  EXPECT_EQ(lambertian["renders"].size(), 1u);
+  EXPECT_EQ(lambertian["environments"][0]["file"], studio);
   EXPECT_TRUE(lambertian["refused"].empty());
-  const json marble = rendersOf(1);
+  const json other = rendersOf(1);
   const std::string page = readFile(out / "index.html");
   if (refusal.empty()) {
-    EXPECT_EQ(marble["renders"].size(), 2u);
-    EXPECT_TRUE(marble["refused"].empty());
+    EXPECT_EQ(other["renders"].size(), 1u);
+    EXPECT_TRUE(other["refused"].empty());
   } else {
-    EXPECT_TRUE(marble["renders"].empty());
-    ASSERT_EQ(marble["refused"].size(), 1u);
-    EXPECT_EQ(marble["refused"][0]["message"], refusal);
+    EXPECT_TRUE(other["renders"].empty());
+    ASSERT_EQ(other["refused"].size(), 1u);
+    EXPECT_EQ(other["refused"][0]["message"], refusal);
     expectMentions(page, {"class=\"render-refused\"", "not rendered: "});
     expectMentions(page, {html::escape(refusal)});
   }
