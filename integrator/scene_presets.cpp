@@ -1,7 +1,6 @@
 #include "integrator/scene_presets.h"
 
 #include "materials/bsdf/lambertian.h"
-#include "materials/bsdf/registry.h"
 
 namespace scatterlab {
 
@@ -33,11 +32,6 @@ Scene makePresetScene(ScenePreset preset, std::unique_ptr<BsdfModel> material, E
   scene.addPlane(Plane{Vec3d(0, 0, -MaterialSphereSetup::SphereRadius), Vec3d(0, 0, 1), Vec3d(1, 0, 0)}, ground);
   scene.setCamera(PinholeCamera::lookAt(Vec3d(0, -5.0, 1.6), Vec3d(0, 0, -0.3), up, 40.0, width, height));
   return scene;
-}
-
-Scene makePresetScene(ScenePreset preset, const nlohmann::json& material, Environment environment, int width,
-                      int height) {
-  return makePresetScene(preset, makeBsdf(material), std::move(environment), width, height);
 }
 
 }  // namespace scatterlab

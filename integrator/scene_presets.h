@@ -15,8 +15,6 @@
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "integrator/scene.h"
 
 namespace scatterlab {
@@ -37,15 +35,6 @@ struct MaterialSphereSetup {
 
 // The preset with `material` on the sphere, lit by `environment`, seen at width x height.
 Scene makePresetScene(ScenePreset preset, std::unique_ptr<BsdfModel> material, Environment environment, int width,
-                      int height);
-
-// The preset with a registry material (JSON, materials/bsdf/registry.h) on the sphere. This is
-// where the renderer says which materials it can render: every caller that holds a material
-// description (the lab report's renders) asks here rather than looking at the type, so a
-// kind of material the renderer learns to render appears everywhere at once. A material it
-// cannot render, or an invalid one, throws MaterialError with the registry's message (today a
-// subsurface material: "... is a subsurface material (a BSSRDF), not a BSDF ...").
-Scene makePresetScene(ScenePreset preset, const nlohmann::json& material, Environment environment, int width,
                       int height);
 
 // The sphere of every preset (the unit sphere at the origin), e.g. for silhouette masks.

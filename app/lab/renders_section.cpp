@@ -11,7 +11,7 @@
 #include "integrator/png_io.h"
 #include "integrator/render.h"
 #include "integrator/render_error.h"
-#include "integrator/scene_presets.h"
+#include "integrator/material_scene.h"
 #include "integrator/silhouette_mask.h"
 #include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
@@ -157,7 +157,7 @@ std::vector<LabEnvironment> loadLabEnvironments(const std::vector<std::string>& 
 
 SphereSceneFactory integratorSphereScene() {
   return [](const json& material, const Environment& environment, int size) {
-    return makePresetScene(ScenePreset::MaterialSphere, material, environment, size, size);
+    return makeMaterialScene(ScenePreset::MaterialSphere, material, environment, size, size);
   };
 }
 

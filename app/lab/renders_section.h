@@ -9,7 +9,7 @@
 //
 // Which materials are rendered is the renderer's decision, not the report's: every material
 // description (the material's own and every fit's) goes to the integrator's
-// makePresetScene(json) (integrator/scene_presets.h), and one it refuses is shown in the report
+// makeMaterialScene (integrator/material_scene.h), and one it refuses is shown in the report
 // with the renderer's message where its picture would be. No type is special-cased here, so a
 // material the renderer learns to render (subsurface materials, for instance) appears in the
 // report without a change in this file.

@@ -10,7 +10,7 @@
 
 #include "app/lab/html.h"
 #include "cli_runner.h"
-#include "integrator/scene_presets.h"
+#include "integrator/material_scene.h"
 #include "materials/bsdf/registry.h"
 
 namespace scatterlab {
@@ -115,7 +115,7 @@ TEST(LabCli, EveryMaterialGoesToTheRenderer) {
   const json subsurface{{"type", "subsurface"}};  // the default medium: a short random walk
   std::string refusal;
   try {
-    makePresetScene(ScenePreset::MaterialSphere, subsurface, Environment::constant(Rgb(1.0)), 8, 8);
+    makeMaterialScene(ScenePreset::MaterialSphere, subsurface, Environment::constant(Rgb(1.0)), 8, 8);
   } catch (const MaterialError& error) {
     refusal = error.what();
   }

@@ -14,7 +14,7 @@
 
 #include "app/exit_code.h"
 #include "app/lab/renders_section.h"
-#include "integrator/scene_presets.h"
+#include "integrator/material_scene.h"
 #include "materials/bsdf/registry.h"
 
 #include "cli_runner.h"
@@ -53,8 +53,8 @@ fs::path freshDir(const std::string& stem) {
 // The integrator's own sphere, for any description, as a Lambertian of albedo 0.5: a renderer
 // that can render everything.
 Scene acceptEverything(const json&, const Environment& environment, int size) {
-  return makePresetScene(ScenePreset::MaterialSphere, json{{"type", "lambertian"}, {"albedo", {0.5, 0.5, 0.5}}},
-                         environment, size, size);
+  return makeMaterialScene(ScenePreset::MaterialSphere, json{{"type", "lambertian"}, {"albedo", {0.5, 0.5, 0.5}}},
+                           environment, size, size);
 }
 
 TEST(LabRenders, AMaterialTheRendererRefusesShowsTheRenderersMessage) {
