@@ -127,6 +127,8 @@ class MaterialReporter {
     });
     if (const std::string refusal = renderRefusal(renders); !refusal.empty())
       report_.keyNumbers.push_back({"renders", "not rendered: " + refusal});
+    if (const std::string closest = closestFitInRenders(renders); !closest.empty())
+      report_.keyNumbers.push_back({"closest fit in the renders", closest + " mean |difference| on the sphere"});
     report_.sections.push_back(std::move(renders));
   }
 

@@ -299,6 +299,31 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
   return section;
 }
 
+std::string closestFitInRenders(const ReportSection& renders) {
+  // Differences are listed map by map; gather each fit's in order.
+  if (!renders.data.contains("differences")) return "";
+  std::vector<std::pair<std::string, std::vector<const json*>>> fits;
+  for (const json& d : renders.data.at("differences")) {
+    const std::string fit = d.value("fit", "");
+    auto it = std::find_if(fits.begin(), fits.end(), [&](const auto& f) { return f.first == fit; });
+    if (it == fits.end()) it = fits.insert(fits.end(), {fit, {}});
+    it->second.push_back(&d);
+  }
+  const auto meanOf = [](const std::vector<const json*>& ds) {
+    double sum = 0;
+    for (const json* d : ds) sum += (*d)["relative_mean_abs_difference"].get<double>();
+    return sum / double(ds.size());
+  };
+  const auto best = std::min_element(fits.begin(), fits.end(),
+                                     [&](const auto& a, const auto& b) { return meanOf(a.second) < meanOf(b.second); });
+  if (best == fits.end()) return "";
+  std::string text = best->first + ":";
+  for (size_t i = 0; i < best->second.size(); ++i)
+    text += (i ? ", " : " ") + percent((*best->second[i])["relative_mean_abs_difference"].get<double>()) + " (" +
+            (*best->second[i])["environment"].get<std::string>() + ")";
+  return text;
+}
+
 std::string renderRefusal(const ReportSection& renders) {
   for (const json& r : renders.data.value("refused", json::array()))
     if (r.value("subject", "") == "material") return r.value("message", "");

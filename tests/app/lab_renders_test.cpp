@@ -131,6 +131,7 @@ TEST(LabRenders, FitsAreRenderedBesideTheMaterialWithTheirDifference) {
   ASSERT_EQ(section.data["refused"].size(), 1u);
   EXPECT_EQ(section.data["refused"][0]["message"], "the fit did not converge (test)");
   EXPECT_EQ(renderRefusal(section), "");  // the material itself was rendered
+  EXPECT_EQ(closestFitInRenders(section), "same: 0% (furnace)");
   cli_runner::expectMentions(section.html, {"Not rendered: unwritten", "the fit did not converge (test)"});
 }
 
