@@ -10,6 +10,7 @@
 #include "app/generate_table_command.h"
 #include "app/models_command.h"
 #include "app/profile_command.h"
+#include "app/shape_factor_command.h"
 #include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
 
@@ -50,6 +51,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* profile = addProfileCommand(app, profileOptions);
   FitCommandOptions fitOptions;
   const CLI::App* fit = addFitCommand(app, fitOptions);
+  ShapeFactorCommandOptions shapeFactorOptions;
+  const CLI::App* shapeFactor = addShapeFactorCommand(app, shapeFactorOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -63,6 +66,7 @@ int runCli(int argc, char** argv) {
     if (*synth) return runSynthCommand(synthOptions);
     if (*profile) return runProfileCommand(profileOptions);
     if (*fit) return runFitCommand(fitOptions);
+    if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);
