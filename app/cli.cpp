@@ -11,6 +11,7 @@
 #include "app/models_command.h"
 #include "app/profile_command.h"
 #include "app/shape_factor_command.h"
+#include "app/render_command.h"
 #include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
 
@@ -53,6 +54,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* fit = addFitCommand(app, fitOptions);
   ShapeFactorCommandOptions shapeFactorOptions;
   const CLI::App* shapeFactor = addShapeFactorCommand(app, shapeFactorOptions);
+  RenderCommandOptions renderOptions;
+  const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -67,6 +70,7 @@ int runCli(int argc, char** argv) {
     if (*profile) return runProfileCommand(profileOptions);
     if (*fit) return runFitCommand(fitOptions);
     if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
+    if (*renderCommand) return runRenderCommand(renderOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);

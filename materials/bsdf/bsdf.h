@@ -40,6 +40,7 @@ enum class LobeFlags : uint32_t {
   GlossyReflection = Glossy | Reflection,
   SpecularReflection = Specular | Reflection,
   GlossyTransmission = Glossy | Transmission,
+  DiffuseTransmission = Diffuse | Transmission,
   SpecularTransmission = Specular | Transmission,
 };
 constexpr LobeFlags operator|(LobeFlags a, LobeFlags b) { return LobeFlags(uint32_t(a) | uint32_t(b)); }

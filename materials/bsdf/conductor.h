@@ -22,10 +22,6 @@ namespace scatterlab {
 // compare sampler efficiency).
 enum class MicrofacetSampling { Visible, Classic };
 
-// Light that scatters more than once between microfacets: lost (the published single-scattering
-// model), or returned by the Kulla & Conty 2017 lobe.
-enum class MultipleScattering { None, KullaConty };
-
 // f(wi, wo) = D(h) F(wi.h) G2(wi, wo) / (4 cos_i cos_o), h = normalize(wi + wo) (Walter et al.
 // 2007 eq. 20), one-sided: 0 unless both directions are above the surface. Without the cosine
 // of wo (bsdf.h conventions). The kernel shared by rendering (T = double) and fitting

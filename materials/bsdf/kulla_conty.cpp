@@ -34,19 +34,19 @@ double wrappedAzimuth(const Vec3d& w) {
 
 }  // namespace
 
-double KullaContyLobe::projectedAlpha(double cosPhi, double sinPhi) const {
-  const double ax = albedo_->alphaX(), ay = albedo_->alphaY();
-  return std::sqrt(sqr(ax * cosPhi) + sqr(ay * sinPhi));
+double LossLobeSampler::projectedAlpha(double cosPhi, double sinPhi) const {
+  return std::sqrt(sqr(alphaX_ * cosPhi) + sqr(alphaY_ * sinPhi));
 }
 
-KullaContyLobe::KullaContyLobe(std::shared_ptr<const WhiteMicrofacetAlbedo> albedo) : albedo_(std::move(albedo)) {
-  const int azimuths = albedo_->isotropic() ? 2 : AnisotropicAzimuthNodes;
+LossLobeSampler::LossLobeSampler(const std::function<double(const Vec3d&)>& loss, double averageLoss, double alphaX,
+                                 double alphaY)
+    : alphaX_(alphaX), alphaY_(alphaY) {
+  const int azimuths = alphaX == alphaY ? 2 : AnisotropicAzimuthNodes;
   std::vector<double> phiEdges(azimuths), vEdges(CosNodes), values;
   for (int i = 0; i < azimuths; ++i) phiEdges[i] = 2.0 * Pi * i / (azimuths - 1);
   for (int j = 0; j < CosNodes; ++j) vEdges[j] = double(j) / (CosNodes - 1);
   // The cosine share: a cosine lobe integrates to pi over the hemisphere, the loss lobe to
   // pi (1 - E_avg).
-  const double averageLoss = albedo_->averageLoss();
   const double floor = averageLoss > 0 ? CosineShare / (1.0 - CosineShare) * averageLoss : 1.0;
   values.reserve(size_t(azimuths) * CosNodes);
   for (int i = 0; i < azimuths; ++i) {
@@ -55,27 +55,34 @@ KullaContyLobe::KullaContyLobe(std::shared_ptr<const WhiteMicrofacetAlbedo> albe
     for (int j = 0; j < CosNodes; ++j) {
       const double mu = map.cosAt(vEdges[j]);
       const double sinTheta = safeSqrt(1.0 - mu * mu);
-      const double loss = albedo_->loss(Vec3d(sinTheta * cosPhi, sinTheta * sinPhi, mu));
-      values.push_back((loss + floor) * mu * map.derivative(vEdges[j]));
+      const double lossHere = std::max(0.0, loss(Vec3d(sinTheta * cosPhi, sinTheta * sinPhi, mu)));
+      values.push_back((lossHere + floor) * mu * map.derivative(vEdges[j]));
     }
   }
   density_ = PiecewiseBilinear2D(std::move(phiEdges), std::move(vEdges), std::move(values));
 }
 
-std::optional<Vec3d> KullaContyLobe::sample(const Vec2d& u) const {
+KullaContyLobe::KullaContyLobe(std::shared_ptr<const WhiteMicrofacetAlbedo> albedo)
+    : albedo_(std::move(albedo)),
+      sampler_([this](const Vec3d& w) { return albedo_->loss(w); }, albedo_->averageLoss(), albedo_->alphaX(),
+               albedo_->alphaY()) {}
+
+std::optional<Vec3d> LossLobeSampler::sample(const Vec2d& u) const {
   const Vec2d point = density_.sample(u);
   const double phi = point.x, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
-  const double mu = cosMap(projectedAlpha(cosPhi, sinPhi)).cosAt(point.y);
+  const double mu = cosMap(alphaX_ == alphaY_ ? alphaX_ : projectedAlpha(cosPhi, sinPhi)).cosAt(point.y);
   if (!(mu > 0)) return std::nullopt;
   const double sinTheta = safeSqrt(1.0 - mu * mu);
   return Vec3d(sinTheta * cosPhi, sinTheta * sinPhi, mu);
 }
 
-double KullaContyLobe::pdf(const Vec3d& wo) const {
+double LossLobeSampler::pdf(const Vec3d& wo) const {
   if (!(wo.z > 0)) return 0.0;
-  const double r = std::sqrt(wo.x * wo.x + wo.y * wo.y);
+  // Isotropic: the density does not depend on the azimuth (its two rows are equal).
+  const bool isotropic = alphaX_ == alphaY_;
+  const double r = isotropic ? 0.0 : std::sqrt(wo.x * wo.x + wo.y * wo.y);
   const double cosPhi = r > 0 ? wo.x / r : 1.0, sinPhi = r > 0 ? wo.y / r : 0.0;
-  const CosMap map = cosMap(projectedAlpha(cosPhi, sinPhi));
+  const CosMap map = cosMap(isotropic ? alphaX_ : projectedAlpha(cosPhi, sinPhi));
   const double v = map.coordinate(std::min(wo.z, 1.0));
   const double jacobian = map.derivative(v);  // dmu/dv; dw = dmu dphi
   if (!(jacobian > 0)) return 0.0;

@@ -16,12 +16,14 @@
 // Sampling. In wo the lobe is (1 - E(wo)) cos_o, which for small roughness is concentrated at
 // grazing directions (where masking acts): cosine sampling would be exact but would give
 // weights up to 1e5 there. The lobe is sampled instead from a tabulated density close to it,
-// exactly: a bilinear density (PiecewiseBilinear2D) over (phi, v), v = sqrt(t) with t the
-// table's Moebius coordinate of mu (white_microfacet_albedo.h), whose vertex values are
-// (1 - E) mu dmu/dv plus 5% of a cosine lobe, so that it is positive wherever f_ms is.
-// Its pdf per solid angle is the bilinear density divided by dmu/dv, exact by construction.
+// exactly (LossLobeSampler, shared with the rough dielectric's compensation): a bilinear
+// density (PiecewiseBilinear2D) over (phi, v), v = sqrt(t) with t the table's Moebius
+// coordinate of mu (white_microfacet_albedo.h), whose vertex values are (1 - E) mu dmu/dv
+// plus 5% of a cosine lobe, so that it is positive wherever f_ms is. Its pdf per solid angle
+// is the bilinear density divided by dmu/dv, exact by construction.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -30,6 +32,11 @@
 #include "materials/core/piecewise_bilinear.h"
 
 namespace scatterlab {
+
+// Light that scatters more than once between microfacets: lost (the published single-scattering
+// models), or returned by a Kulla & Conty 2017 lobe (the conductor's below, the rough
+// dielectric's in rough_dielectric_multiscatter.h).
+enum class MultipleScattering { None, KullaConty };
 
 // f_ms for F = 1 from the losses 1 - E(wi), 1 - E(wo) and 1 - E_avg; 0 when nothing is lost
 // on average (then nothing is lost at any direction either).
@@ -44,6 +51,33 @@ template <typename T> RgbT<T> kullaContyFresnel(const RgbT<T>& fresnelAverage, c
   return fresnelAverage * fresnelAverage * averageAlbedo / (one - fresnelAverage * (T(1) - averageAlbedo));
 }
 
+// Directions above the surface drawn from a tabulated density close to loss(w) cos theta, with
+// its exact pdf (the header comment): the sampler of a compensation lobe whose shape in wo is
+// (1 - E(wo)) cos_o. `loss` is read at the table's vertices during construction only;
+// `averageLoss` = (1/pi) integral of loss cos sets the cosine share; alphaX, alphaY place the
+// vertices where masking changes E (on the scale mu ~ alpha).
+class LossLobeSampler {
+ public:
+  LossLobeSampler() = default;
+  LossLobeSampler(const std::function<double(const Vec3d&)>& loss, double averageLoss, double alphaX, double alphaY);
+
+  // A direction above the surface (nothing on the measure-zero rim), and its density per solid
+  // angle; pdf is 0 for wo.z <= 0.
+  std::optional<Vec3d> sample(const Vec2d& u) const;
+  double pdf(const Vec3d& wo) const;
+
+  static constexpr int CosNodes = 65;                 // v nodes
+  static constexpr int AnisotropicAzimuthNodes = 65;  // phi nodes over [0, 2 pi]
+  static constexpr double CosineShare = 0.05;         // of the sampling density's mass
+
+ private:
+  // The Moebius scale's roughness along the azimuth phi.
+  double projectedAlpha(double cosPhi, double sinPhi) const;
+
+  double alphaX_ = 1.0, alphaY_ = 1.0;
+  PiecewiseBilinear2D density_;  // over (phi in [0, 2 pi], v in [0, 1])
+};
+
 // The compensation lobe of one distribution and roughness with F = 1: its value, and a sampler
 // of wo with an exact pdf close to the lobe's shape in wo.
 class KullaContyLobe {
@@ -56,21 +90,17 @@ class KullaContyLobe {
     if (!(wi.z > 0) || !(wo.z > 0)) return 0.0;
     return kullaContyLobe(albedo_->loss(wi), albedo_->loss(wo), albedo_->averageLoss());
   }
-  // A direction above the surface (nothing on the measure-zero rim), and its density per solid
-  // angle; pdf is 0 for wo.z <= 0.
-  std::optional<Vec3d> sample(const Vec2d& u) const;
-  double pdf(const Vec3d& wo) const;
+  // See LossLobeSampler.
+  std::optional<Vec3d> sample(const Vec2d& u) const { return sampler_.sample(u); }
+  double pdf(const Vec3d& wo) const { return sampler_.pdf(wo); }
 
-  static constexpr int CosNodes = 65;               // v nodes
-  static constexpr int AnisotropicAzimuthNodes = 65;  // phi nodes over [0, 2 pi]
-  static constexpr double CosineShare = 0.05;       // of the sampling density's mass
+  static constexpr int CosNodes = LossLobeSampler::CosNodes;
+  static constexpr int AnisotropicAzimuthNodes = LossLobeSampler::AnisotropicAzimuthNodes;
+  static constexpr double CosineShare = LossLobeSampler::CosineShare;
 
  private:
-  // The Moebius scale's roughness along the azimuth phi.
-  double projectedAlpha(double cosPhi, double sinPhi) const;
-
   std::shared_ptr<const WhiteMicrofacetAlbedo> albedo_;
-  PiecewiseBilinear2D density_;  // over (phi in [0, 2 pi], v in [0, 1])
+  LossLobeSampler sampler_;
 };
 
 }  // namespace scatterlab

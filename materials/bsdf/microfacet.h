@@ -15,8 +15,10 @@
 
 #include <concepts>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
+#include "materials/bsdf/microfacet_type.h"
 #include "materials/core/spherical.h"
 
 namespace scatterlab {
@@ -391,5 +393,12 @@ template <typename T> class BeckmannDistribution : public SmithMicrofacet<Beckma
     return {cosPhi, sinPhi, BeckmannVisibleSlopeX(std::max(0.0, ws.z), sinTheta)};
   }
 };
+
+// The MicrofacetType of a distribution class (for tables and caches keyed by it).
+template <typename Distribution> constexpr MicrofacetType microfacetTypeOf() {
+  static_assert(std::is_same_v<Distribution, GgxDistribution<double>> ||
+                std::is_same_v<Distribution, BeckmannDistribution<double>>);
+  return std::is_same_v<Distribution, GgxDistribution<double>> ? MicrofacetType::Ggx : MicrofacetType::Beckmann;
+}
 
 }  // namespace scatterlab

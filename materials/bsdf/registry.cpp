@@ -451,6 +451,18 @@ std::vector<ParameterSpec> microfacetParameters() {
            .description = "roughness; [alpha_x, alpha_y] is anisotropic along the tangent and bitangent"}};
 }
 
+// Multiple scattering between microfacets (conductor.h, rough_dielectric.h). Off by default:
+// the single-scattering model is the published one (and the one measured-data fits use);
+// existing materials keep their meaning. `lobe`: what the model's compensation lobe has.
+ParameterSpec multipleScatteringParameter(const std::string& lobe) {
+  return {.name = "multiscatter",
+          .kind = ParameterKind::Choice,
+          .choices = choiceNames(MultipleScatterings),
+          .defaultValue = "none",
+          .description = "light scattered more than once between microfacets: lost (\"none\"), or returned by "
+                         "Kulla & Conty 2017's lobe with " + lobe + " (\"kulla-conty\")"};
+}
+
 // ---- Conductors (conductor.h, smooth_conductor.h): the complex index of refraction, as a
 // named metal or as eta and k, the same way for every conductor model.
 
@@ -502,16 +514,7 @@ MaterialModel conductorModel() {
                                       .choices = choiceNames(MicrofacetSamplings),
                                       .defaultValue = "visible",
                                       .description = "visible-normal sampling, or classic D cos sampling"},
-                                     // Off by default: the single-scattering model is the published one
-                                     // (and the one measured-data fits use); existing materials keep
-                                     // their meaning.
-                                     {.name = "multiscatter",
-                                      .kind = ParameterKind::Choice,
-                                      .choices = choiceNames(MultipleScatterings),
-                                      .defaultValue = "none",
-                                      .description = "light scattered more than once between microfacets: lost "
-                                                     "(\"none\"), or returned by Kulla & Conty 2017's lobe with "
-                                                     "tabulated albedos (\"kulla-conty\")"}}}),
+                                     multipleScatteringParameter("tabulated albedos")}}),
       .alternatives = conductorIndexAlternatives(),
       .build = buildConductor,
       .lobeWidthParameter = "alpha",
@@ -596,22 +599,30 @@ MaterialModel thinDielectricModel() {
 
 std::unique_ptr<BsdfModel> buildRoughDielectric(const MaterialParameters& p) {
   const Vec2d alpha = p.pair("alpha");
+  const MultipleScattering multipleScattering = choiceValue(MultipleScatterings, p.choice("multiscatter"));
+  // The compensation's albedo tables are per side and per |cos|: isotropic roughness only
+  // (rough_dielectric_multiscatter.h).
+  if (multipleScattering == MultipleScattering::KullaConty && alpha.x != alpha.y)
+    fail("alpha", json::array({alpha.x, alpha.y}), "is anisotropic, which \"multiscatter\": \"kulla-conty\" does not support",
+         "one number in [0.001, 1] (isotropic) with \"multiscatter\": \"kulla-conty\", or \"multiscatter\": \"none\"");
   return makeRoughDielectric(choiceValue(MicrofacetTypes, p.choice("distribution")), alpha.x, alpha.y,
-                             p.number("eta"));
+                             p.number("eta"), multipleScattering);
 }
 
 MaterialModel roughDielectricModel() {
   return {
       .type = "rough-dielectric",
       .description = "Rough glass: GGX or Beckmann microfacet reflection and refraction, exact Fresnel, single "
-                     "scattering (loses energy as alpha grows)",
+                     "scattering (loses energy as alpha grows) or with multiple-scattering compensation (lossless)",
       .citation = "Walter et al. 2007, Microfacet Models for Refraction through Rough Surfaces, eq. 16-21; Heitz "
                   "2014 (height-correlated Smith G2, Beta form for refraction); Heitz 2018, Heitz & d'Eon 2014 "
-                  "(visible normals)",
+                  "(visible normals); Kulla & Conty 2017 (multiple-scattering compensation)",
       .parameters = joinParameters(
           {microfacetParameters(),
            {dielectricIndexParameter(RoughDielectricIndexRange,
-                                     "index of refraction inside (below the surface) relative to outside")}}),
+                                     "index of refraction inside (below the surface) relative to outside"),
+            multipleScatteringParameter("reflection and transmission parts and per-material albedo tables; "
+                                        "isotropic alpha only")}}),
       .alternatives = {},
       .build = buildRoughDielectric,
       .lobeWidthParameter = "alpha",

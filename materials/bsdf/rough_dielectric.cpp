@@ -6,7 +6,8 @@
 
 namespace scatterlab {
 
-std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alphaX, double alphaY, double eta) {
+std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alphaX, double alphaY, double eta,
+                                               MultipleScattering multipleScattering) {
   // D divides by both roughnesses: 0 or a non-finite value has no meaningful lobe.
   for (const double alpha : {alphaX, alphaY}) {
     if (!(alpha > 0.0) || !std::isfinite(alpha))
@@ -17,10 +18,10 @@ std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alpha
   switch (type) {
     case MicrofacetType::Ggx:
       return std::make_unique<RoughDielectricBsdf<GgxDistribution<double>>>(GgxDistribution<double>(alphaX, alphaY),
-                                                                            eta);
+                                                                            eta, multipleScattering);
     case MicrofacetType::Beckmann:
       return std::make_unique<RoughDielectricBsdf<BeckmannDistribution<double>>>(
-          BeckmannDistribution<double>(alphaX, alphaY), eta);
+          BeckmannDistribution<double>(alphaX, alphaY), eta, multipleScattering);
   }
   throw std::invalid_argument("unknown microfacet distribution");
 }

@@ -16,20 +16,25 @@
 // exact: the density of m (visible normals) times the lobe's probability times the Jacobian
 // from m to wo (1 / (4 |wo.h|) or Walter eq. 17).
 //
-// Energy: light that scatters more than once among the microfacets is lost, so the model is
-// not lossless (isLossless() is false); rough_dielectric_albedo.h computes what it keeps.
-// The pieces below are free functions so that energy compensation (Kulla & Conty 2017) can
-// wrap this model without repeating any of it.
+// Energy: light that scatters more than once among the microfacets is lost, so the published
+// model is not lossless; rough_dielectric_albedo.h computes what it keeps. With
+// MultipleScattering::KullaConty (isotropic roughness) the compensation lobe of
+// rough_dielectric_multiscatter.h returns it, and the model is lossless in importance
+// transport (isLossless() is true). It is then sampled as a mixture: single scattering with
+// probability E_s(wi) (the table's single-scattering albedo at wi's side), the compensation
+// lobe otherwise; the pdf is that mixture's, exactly.
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 
 #include "materials/bsdf/bsdf.h"
-#include "materials/bsdf/conductor.h"  // MicrofacetType
 #include "materials/bsdf/fresnel.h"
 #include "materials/bsdf/half_vector.h"
 #include "materials/bsdf/microfacet.h"
+#include "materials/bsdf/microfacet_type.h"
 #include "materials/bsdf/refraction.h"
+#include "materials/bsdf/rough_dielectric_multiscatter.h"
 #include "materials/bsdf/smith_transmission.h"
 
 namespace scatterlab {
@@ -142,39 +147,98 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
  public:
   // eta: the index below the surface relative to above, != 1 (an index-matched interface
   // refracts nothing, whatever its roughness; the generalised half vector is then undefined).
-  RoughDielectricBsdf(const Distribution& distribution, double eta) : distribution_(distribution), eta_(eta) {}
-
-  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode = TransportMode::Radiance) const override {
-    return Rgb(roughDielectricEval<double>(distribution_, eta_, wi, wo, mode));
+  // With MultipleScattering::KullaConty the roughness must be isotropic and in (0, 1], the
+  // range of the compensation's tables (std::invalid_argument otherwise).
+  RoughDielectricBsdf(const Distribution& distribution, double eta,
+                      MultipleScattering multipleScattering = MultipleScattering::None)
+      : distribution_(distribution), eta_(eta) {
+    if (multipleScattering == MultipleScattering::KullaConty) {
+      if (!distribution.isotropic())
+        throw std::invalid_argument("the rough dielectric's multiple-scattering compensation needs isotropic roughness");
+      compensation_ = RoughDielectricCompensation::shared(microfacetTypeOf<Distribution>(), distribution.alphaX(), eta);
+    }
   }
 
+  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode = TransportMode::Radiance) const override {
+    if (!compensation_) return Rgb(roughDielectricEval<double>(distribution_, eta_, wi, wo, mode));
+    return Rgb(compensatedEval(wi, wo, 1.0 - compensation_->albedoAt(wi), mode));
+  }
+
+  // Without compensation, the density of the refracted or reflected sampled normal. With it,
+  // the mixture that sample() draws (the header comment).
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
-    return roughDielectricPdf(distribution_, eta_, wi, wo);
+    if (!compensation_) return roughDielectricPdf(distribution_, eta_, wi, wo);
+    return compensatedPdf(wi, wo, compensation_->albedoAt(wi));
   }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                    TransportMode mode = TransportMode::Radiance) const override {
     if (wi.z == 0 || !std::isfinite(wi.z)) return std::nullopt;
+    if (compensation_) return sampleCompensated(wi, uLobe, u, mode);
     const Vec3d m = sampleRoughDielectricNormal(distribution_, wi, u);
     const bool transmission = !(uLobe < fresnelDielectric(glm::dot(wi, m), eta_));
     return scatterRoughDielectric(distribution_, eta_, wi, m, transmission, mode);
   }
 
-  LobeFlags flags() const override { return LobeFlags::GlossyReflection | LobeFlags::GlossyTransmission; }
-  bool isLossless() const override { return false; }
+  LobeFlags flags() const override {
+    const LobeFlags single = LobeFlags::GlossyReflection | LobeFlags::GlossyTransmission;
+    return compensation_ ? single | LobeFlags::DiffuseReflection | LobeFlags::DiffuseTransmission : single;
+  }
+  // A compensated dielectric absorbs nothing and returns what single scattering misses.
+  bool isLossless() const override { return compensation_ != nullptr; }
   double interiorIndex() const override { return eta_; }
 
   const Distribution& distribution() const { return distribution_; }
   double eta() const { return eta_; }
+  MultipleScattering multipleScattering() const {
+    return compensation_ ? MultipleScattering::KullaConty : MultipleScattering::None;
+  }
+  // The compensation lobe, or null.
+  const RoughDielectricCompensation* compensation() const { return compensation_.get(); }
 
  private:
+  // eval() and pdf() with compensation, given E_s(wi) (a table lookup, done once per sample).
+  double compensatedEval(const Vec3d& wi, const Vec3d& wo, double lossI, TransportMode mode) const {
+    return roughDielectricEval<double>(distribution_, eta_, wi, wo, mode) + compensation_->eval(wi, wo, lossI, mode);
+  }
+  double compensatedPdf(const Vec3d& wi, const Vec3d& wo, double albedoI) const {
+    return albedoI * roughDielectricPdf(distribution_, eta_, wi, wo) + (1.0 - albedoI) * compensation_->pdf(wi, wo);
+  }
+
+  // Single scattering with probability E_s(wi), its lobe then chosen by Fresnel with uLobe
+  // rescaled to [0, 1); the compensation lobe otherwise, with uLobe rescaled likewise. The
+  // weight is the mixture's f |cos| / pdf, computed as eval() and pdf() compute them.
+  std::optional<BsdfSample> sampleCompensated(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                              TransportMode mode) const {
+    const double albedoI = compensation_->albedoAt(wi);
+    const bool single = uLobe < albedoI;
+    std::optional<Vec3d> wo;
+    if (single) {
+      const Vec3d m = sampleRoughDielectricNormal(distribution_, wi, u);
+      const bool transmission = !(uLobe / albedoI < fresnelDielectric(glm::dot(wi, m), eta_));
+      if (const auto s = scatterRoughDielectric(distribution_, eta_, wi, m, transmission, mode)) wo = s->wo;
+    } else {
+      wo = compensation_->sample(wi, (uLobe - albedoI) / (1.0 - albedoI), u);
+    }
+    if (!wo || wo->z == 0) return std::nullopt;
+    const double density = compensatedPdf(wi, *wo, albedoI);
+    if (!(density > 0)) return std::nullopt;
+    const bool transmitted = wo->z * wi.z < 0;
+    const double weight = compensatedEval(wi, *wo, 1.0 - albedoI, mode) * std::abs(wo->z) / density;
+    const LobeFlags lobe = single ? (transmitted ? LobeFlags::GlossyTransmission : LobeFlags::GlossyReflection)
+                                  : (transmitted ? LobeFlags::DiffuseTransmission : LobeFlags::DiffuseReflection);
+    return BsdfSample{*wo, Rgb(weight), density, lobe, transmitted ? relativeIndex(wi, *wo, eta_) : 1.0};
+  }
+
   Distribution distribution_;
   double eta_;
+  std::shared_ptr<const RoughDielectricCompensation> compensation_;  // set with compensation
 };
 
 // The rough dielectric for the registry. alphaX and alphaY must be positive and finite, eta
-// positive, finite and != 1 (std::invalid_argument otherwise; the registry reports the
-// allowed range to the user).
-std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alphaX, double alphaY, double eta);
+// positive, finite and != 1, and with compensation alphaX == alphaY <= 1 (std::invalid_argument
+// otherwise; the registry reports the allowed range to the user).
+std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alphaX, double alphaY, double eta,
+                                               MultipleScattering multipleScattering = MultipleScattering::None);
 
 }  // namespace scatterlab

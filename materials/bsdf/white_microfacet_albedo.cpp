@@ -1,12 +1,12 @@
 #include "materials/bsdf/white_microfacet_albedo.h"
 
 #include <functional>
-#include <map>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "materials/core/shared_cache.h"
 
 namespace scatterlab {
 
@@ -65,12 +65,7 @@ QuadratureOptions averageQuadrature(double relativeTolerance) {
   return q;
 }
 
-using CacheKey = std::tuple<MicrofacetType, double, double>;
-struct Cache {
-  std::mutex mutex;
-  std::map<CacheKey, std::shared_ptr<const WhiteMicrofacetAlbedo>> entries;
-};
-// A fit that moves the roughness continuously would otherwise grow the cache without bound.
+// See SharedCache: bounded, for fits that move the roughness continuously.
 constexpr size_t MaxCacheEntries = 64;
 
 }  // namespace
@@ -99,17 +94,9 @@ WhiteMicrofacetAlbedo::WhiteMicrofacetAlbedo(MicrofacetType type, double alphaX,
 
 std::shared_ptr<const WhiteMicrofacetAlbedo> WhiteMicrofacetAlbedo::shared(MicrofacetType type, double alphaX,
                                                                            double alphaY) {
-  static Cache cache;
-  const CacheKey key{type, alphaX, alphaY};
-  {
-    const std::lock_guard lock(cache.mutex);
-    if (const auto it = cache.entries.find(key); it != cache.entries.end()) return it->second;
-  }
-  // Built outside the lock: an anisotropic table takes milliseconds to a fraction of a second.
-  auto albedo = std::make_shared<const WhiteMicrofacetAlbedo>(type, alphaX, alphaY);
-  const std::lock_guard lock(cache.mutex);
-  if (cache.entries.size() >= MaxCacheEntries) cache.entries.clear();
-  return cache.entries.emplace(key, std::move(albedo)).first->second;
+  static SharedCache<std::tuple<MicrofacetType, double, double>, WhiteMicrofacetAlbedo> cache(MaxCacheEntries);
+  return cache.get({type, alphaX, alphaY},
+                   [&] { return std::make_shared<const WhiteMicrofacetAlbedo>(type, alphaX, alphaY); });
 }
 
 double WhiteMicrofacetAlbedo::projectedAlpha(double cos2Phi) const {

@@ -156,11 +156,7 @@ class WhiteMicrofacetAlbedo {
   // less than 1e-6 except within mu < 0.01 of grazing.
   static std::shared_ptr<const WhiteMicrofacetAlbedo> shared(MicrofacetType type, double alphaX, double alphaY);
   template <typename Distribution> static std::shared_ptr<const WhiteMicrofacetAlbedo> of(const Distribution& d) {
-    static_assert(std::is_same_v<Distribution, GgxDistribution<double>> ||
-                  std::is_same_v<Distribution, BeckmannDistribution<double>>);
-    return shared(std::is_same_v<Distribution, GgxDistribution<double>> ? MicrofacetType::Ggx
-                                                                          : MicrofacetType::Beckmann,
-                  d.alphaX(), d.alphaY());
+    return shared(microfacetTypeOf<Distribution>(), d.alphaX(), d.alphaY());
   }
 
   WhiteMicrofacetAlbedo(MicrofacetType type, double alphaX, double alphaY);

@@ -27,7 +27,10 @@ struct Case {
 std::string specOf(const Case& c) {
   if (!c.spec.empty()) return c.spec;
   std::string spec;
-  for (const json& m : c.truth) spec += (spec.empty() ? "" : "+") + m["type"].get<std::string>();
+  for (const json& m : c.truth) {
+    if (!spec.empty()) spec += '+';
+    spec += m["type"].get<std::string>();
+  }
   return spec;
 }
 
@@ -76,14 +79,14 @@ TEST(Recovery, MicrofacetLobesWithLambertian) {
 // The conductor lobe: the fitter's scale is the blend weight the truth carries it with (it has
 // no registry parameter of its own), spelt out here; GGX and Beckmann with a held copper index.
 TEST(Recovery, ConductorScaleAndRoughness) {
-  for (const std::string& distribution : {"ggx", "beckmann"}) {
+  for (const std::string distribution : {"ggx", "beckmann"}) {
     const json lobe{{"type", "conductor"}, {"distribution", distribution}, {"alpha", 0.07}, {"metal", "Cu"}};
     const json lambertian{{"type", "lambertian"}, {"albedo", {0.1, 0.2, 0.3}}};
     const Rgb scale(0.6, 0.5, 0.4);
     const json blend{{"type", "blend"}, {"weight", {scale.x, scale.y, scale.z}},
                      {"materials", {lobe, json{{"type", "lambertian"}, {"albedo", 0.0}}}}};
     const FitModel model(
-        parseModelSpec(R"({"type":"conductor","metal":"Cu","distribution":")" + distribution + R"("}+lambertian)"), false);
+        parseModelSpec(json{{"type", "conductor"}, {"metal", "Cu"}, {"distribution", distribution}}.dump() + "+lambertian"), false);
     const FitResult result = fitBrdf(model, cellSamples(GroundTruth({blend, lambertian}), 2), quickOptions(Metric::Ngan));
     EXPECT_TRUE(result.final.converged) << distribution;
     EXPECT_NEAR(parameterValue(model, result.x, "conductor.alpha"), 0.07, Tolerance * 0.07) << distribution;
@@ -122,7 +125,7 @@ TEST(Recovery, DisneyWithMetallicFittedReportsItsDegeneracy) {
   EXPECT_LT(result.final.finalCost, 1e-12 * result.starts.front().initialCost);  // fits the data exactly
   EXPECT_TRUE(result.rankDeficient);
   ASSERT_EQ(result.unidentified.size(), 1u);
-  for (const std::string& name : {"disney.metallic", "disney.specular", "disney.specularTint"})
+  for (const std::string name : {"disney.metallic", "disney.specular", "disney.specularTint"})
     EXPECT_NE(result.unidentified[0].find(name), std::string::npos) << result.unidentified[0];
   EXPECT_TRUE(result.covarianceAvailable);  // the pseudo-inverse
 }

@@ -34,7 +34,7 @@ TEST(RobustLoss, OutliersPullThePlainFitButNotTheRobustOnes) {
   FitOptions options = quickOptions(Metric::Ngan);
   const double plain = worstRelativeError(model, fitBrdf(model, samples, options).x);
   std::printf("plain least squares: worst relative parameter error %.4f\n", plain);
-  for (const std::string& name : {"huber", "cauchy", "soft-l1"}) {
+  for (const std::string name : {"huber", "cauchy", "soft-l1"}) {
     options.robust = *parseRobustLoss(name);
     const FitResult result = fitBrdf(model, samples, options);
     const double robust = worstRelativeError(model, result.x);

@@ -2,12 +2,13 @@
 // energy say how much"). Light that scatters more than once among the microfacets is not in
 // the model, so the directional albedo E = E_R + E_T (importance transport: power) falls
 // below 1 as alpha grows, from outside and inside, and isLossless() is false. Energy
-// compensation (Kulla & Conty 2017) is a separate model; it will tabulate exactly these E.
+// compensation (Kulla & Conty 2017) is the "multiscatter": "kulla-conty" option
+// (rough_dielectric_multiscatter.h), which tabulates exactly these E
+// (rough_dielectric_multiscatter_test.cpp checks its tables against this table's points).
 //
 // E comes from rough_dielectric_albedo.h (quadrature over the visible-normal sample square);
 // here it is checked against an independent estimate, a quadrature of f |cos wo| over the
-// sphere of wo, reflection and transmission apart, and the whole table is printed for the
-// compensation's author.
+// sphere of wo, reflection and transmission apart, and the whole table is printed.
 #include <gtest/gtest.h>
 
 #include <cstdio>

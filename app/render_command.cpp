@@ -1,0 +1,351 @@
+#include "app/render_command.h"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_code.h"
+#include "app/option_values.h"
+#include "app/progress.h"
+#include "integrator/contact_sheet.h"
+#include "integrator/environment_map_file.h"
+#include "integrator/exr_io.h"
+#include "integrator/png_io.h"
+#include "integrator/render.h"
+#include "integrator/render_error.h"
+#include "integrator/scene_presets.h"
+#include "integrator/silhouette_mask.h"
+#include "materials/bsdf/registry.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
+
+std::optional<int> parsePositive(const std::string& text) {
+  int value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || value < 1) return std::nullopt;
+  return value;
+}
+
+const std::string ResolutionAllowed = "WxH (or N for N x N), each side in [1, " + std::to_string(MaxImageSide) +
+                                      "] and at most " + std::to_string(MaxImagePixels) + " pixels, e.g. 256x256";
+
+CLI::Validator resolutionValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return parseResolution(text) ? "" : inQuotes(text) + " is not a valid resolution; allowed: " + ResolutionAllowed;
+      },
+      "WxH");
+}
+
+struct MaterialToRender {
+  std::string label;
+  json completed;
+  std::unique_ptr<BsdfModel> model;
+};
+
+std::string defaultLabel(const std::string& argument, const json& material) {
+  if (!isInlineMaterial(argument)) return fs::path(argument).stem().string();
+  return material.value("type", std::string("material"));
+}
+
+MaterialToRender loadMaterial(const std::string& argument) {
+  const json material = loadMaterialArgument(argument);
+  try {
+    return {defaultLabel(argument, material), completeMaterial(material), makeBsdf(material)};
+  } catch (const MaterialError& error) {
+    if (isInlineMaterial(argument)) throw;
+    throw MaterialError("material file " + inQuotes(argument) + ": " + error.what());
+  }
+}
+
+struct LoadedEnvironment {
+  Environment environment;
+  json description;
+};
+
+LoadedEnvironment loadEnvironment(const RenderCommandOptions& options) {
+  const Transform rotation = Transform::rotate(options.envRotateDegrees, Vec3d(0, 0, 1));
+  if (options.env == "white") return {Environment::constant(Rgb(options.envStrength)), {{"type", "constant"}}};
+  try {
+    EnvironmentMapFile file = readEnvironmentMap(options.env);
+    const json description{{"type", "map"},
+                           {"file", options.env},
+                           {"size", {file.image.width(), file.image.height()}},
+                           {"clamped_negative_values", file.clampedNegatives},
+                           {"most_negative_value", file.mostNegative}};
+    return {Environment::fromMap(std::move(file.image), options.envStrength, rotation), description};
+  } catch (const RenderInputError& error) {
+    throw InputError(std::string("--env: ") + error.what());
+  }
+}
+
+Estimator estimatorOf(const std::string& name) {
+  if (name == "bsdf") return Estimator::BsdfOnly;
+  if (name == "light") return Estimator::LightOnly;
+  return Estimator::Mis;
+}
+
+struct OutputPaths {
+  fs::path exr, png;
+};
+
+// PREFIX.exr and PREFIX.png, neither a directory, in an existing, writable directory.
+OutputPaths checkOutput(const std::string& prefix) {
+  if (prefix.empty()) throw InputError("--out: missing; allowed: a path prefix, e.g. out/gold");
+  OutputPaths paths{fs::path(prefix + ".exr"), fs::path(prefix + ".png")};
+  checkOutputFile("--out", paths.exr.string(), "out/gold (for out/gold.exr and out/gold.png)");
+  checkOutputFile("--out", paths.png.string(), "out/gold (for out/gold.exr and out/gold.png)");
+  const fs::path directory = paths.exr.parent_path().empty() ? fs::path(".") : paths.exr.parent_path();
+  if (::access(directory.c_str(), W_OK) != 0)
+    throw InputError("--out: directory " + inQuotes(directory.string()) + " is not writable; allowed: a writable directory");
+  return paths;
+}
+
+json statisticsJson(const RegionStatistics& s) {
+  return {{"n", s.pixels},
+          {"mean_rgb", {s.meanRgb.x, s.meanRgb.y, s.meanRgb.z}},
+          {"std_rgb", {s.stdRgb.x, s.stdRgb.y, s.stdRgb.z}},
+          {"mean", s.mean},
+          {"std", s.std},
+          {"min", s.min},
+          {"max", s.max}};
+}
+
+// A bar for the progress line: "[#####.....]".
+std::string progressBar(double fraction) {
+  constexpr int Width = 24;
+  const int filled = std::clamp(int(fraction * Width + 0.5), 0, Width);
+  return "[" + std::string(size_t(filled), '#') + std::string(size_t(Width - filled), '.') + "]";
+}
+
+// Writes both files or neither: the PNG's failure removes the EXR just written.
+void writeBoth(const OutputPaths& paths, const std::vector<ExrLayer>& layers, const Image& color, double exposure) {
+  try {
+    writeExr(paths.exr, layers);
+    try {
+      writePngSrgb(paths.png, color, exposure);
+    } catch (...) {
+      std::error_code ignored;
+      fs::remove(paths.exr, ignored);
+      throw;
+    }
+  } catch (const RenderInputError& error) {
+    throw InputError(std::string("--out: ") + error.what());
+  }
+}
+
+}  // namespace
+
+std::optional<Resolution> parseResolution(const std::string& text) {
+  const auto separator = text.find('x');
+  const auto width = parsePositive(text.substr(0, separator));
+  const auto height = separator == std::string::npos ? width : parsePositive(text.substr(separator + 1));
+  if (!width || !height || *width > MaxImageSide || *height > MaxImageSide ||
+      int64_t(*width) * int64_t(*height) > MaxImagePixels)
+    return std::nullopt;
+  return Resolution{*width, *height};
+}
+
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "render", "Path-trace material spheres: PREFIX.exr (linear float) and PREFIX.png (sRGB); two or more "
+                "materials make a labelled contact sheet (gallery)");
+  command->add_option("material", options.materials, "Material(s): inline JSON or JSON files; several: a gallery")
+      ->required();
+  command->add_option("--scene", options.scene, "Built-in scene: sphere (the peers' material sphere) or preview "
+                                                "(on a checkered ground)")
+      ->check(choiceOf(scenePresetNames(), "a scene"))
+      ->capture_default_str();
+  command->add_option("--env", options.env,
+                      "Environment: white (constant radiance 1, the furnace) or an equirectangular OpenEXR map "
+                      "(width = 2 x height; column u looks along phi = pi - 2 pi u, as Cycles)")
+      ->type_name("FILE|white")
+      ->capture_default_str();
+  command->add_option("--env-strength", options.envStrength, "Environment radiance scale")
+      ->type_name("S")
+      ->check(numberIn(ValueRange::closed(0.0, 1e6)))
+      ->capture_default_str();
+  command->add_option("--env-rotate", options.envRotateDegrees, "Turn the environment about +Z by DEG degrees")
+      ->type_name("DEG")
+      ->check(numberIn(ValueRange::closed(-360.0, 360.0), "degrees"))
+      ->capture_default_str();
+  command->add_option("--spp", options.spp, "Samples per pixel")
+      ->type_name("N")
+      ->transform(integerIn(1, MaxSamplesPerPixel))
+      ->capture_default_str();
+  command->add_option("--res", options.resolution, "Image size WxH (or N for N x N)")
+      ->type_name("WxH")
+      ->check(resolutionValidator())
+      ->capture_default_str();
+  command->add_option("--threads", options.threads, "Worker threads (0: all cores); the image does not depend on it")
+      ->type_name("N")
+      ->transform(integerIn(0, 1024))
+      ->capture_default_str();
+  command->add_option("--seed", options.seed, "Seed; the same seed gives the same image")
+      ->type_name("N")
+      ->transform(integerIn(0))
+      ->capture_default_str();
+  command->add_option("--max-depth", options.maxDepth, "Most bounces per path (Cycles' max_bounces)")
+      ->type_name("N")
+      ->transform(integerIn(0, MaxPathDepth))
+      ->capture_default_str();
+  command->add_option("--estimator", options.estimator,
+                      "mis (NEE + BSDF sampling, power heuristic), bsdf (BSDF sampling only) or light (light "
+                      "sampling only for direct light): for checking that they agree")
+      ->check(choiceOf({"mis", "bsdf", "light"}, "an estimator"))
+      ->capture_default_str();
+  command->add_option("--filter", options.filter, "Pixel filter: box (1 pixel) or gaussian (sigma 0.5, radius 1.5 px)")
+      ->check(choiceOf({"box", "gaussian"}, "a filter"))
+      ->capture_default_str();
+  command->add_option("--exposure", options.exposure, "PNG exposure in stops (x 2^EV before sRGB encoding)")
+      ->type_name("EV")
+      ->check(numberIn(ValueRange::closed(-30.0, 30.0), "stops"))
+      ->capture_default_str();
+  command->add_option("--layers", options.layers, "Extra EXR layers: albedo, normal, variance (single material only)")
+      ->delimiter(',')
+      ->check(choiceOf({"albedo", "normal", "variance"}, "a layer"));
+  command->add_option("--label", options.labels, "Gallery label per material, in order (default: file name or type)");
+  command->add_option("--columns", options.columns, "Gallery columns (0: a square-ish grid)")
+      ->type_name("N")
+      ->transform(integerIn(0, 1024))
+      ->capture_default_str();
+  command->add_option("--out", options.out, "Output prefix: writes PREFIX.exr and PREFIX.png")
+      ->type_name("PREFIX")
+      ->required();
+  command->add_flag("--json", options.json, "Print the run (settings, timings, sphere and background means) as JSON");
+  return command;
+}
+
+int runRenderCommand(const RenderCommandOptions& options) {
+  // ---- Every input first: nothing is rendered or written unless all of it is valid.
+  const auto resolution = parseResolution(options.resolution);
+  if (!resolution) throw InputError("--res: " + inQuotes(options.resolution) + " is not valid; allowed: " + ResolutionAllowed);
+  const ScenePreset preset = *findScenePreset(options.scene);
+  const bool gallery = options.materials.size() > 1;
+  if (!options.labels.empty() && options.labels.size() != options.materials.size())
+    throw InputError("--label: " + std::to_string(options.labels.size()) + " labels for " +
+                     std::to_string(options.materials.size()) + " materials; allowed: one label per material");
+  if (gallery && !options.layers.empty())
+    throw InputError("--layers: only with a single material; a gallery writes the colour sheet alone");
+  std::vector<MaterialToRender> materials;
+  for (size_t i = 0; i < options.materials.size(); ++i) {
+    materials.push_back(loadMaterial(options.materials[i]));
+    if (!options.labels.empty()) materials.back().label = options.labels[i];
+  }
+  const LoadedEnvironment loaded = loadEnvironment(options);
+  const Environment& environment = loaded.environment;
+  const OutputPaths paths = checkOutput(options.out);
+
+  RenderSettings settings;
+  settings.samplesPerPixel = options.spp;
+  settings.seed = options.seed;
+  settings.threads = options.threads;
+  settings.filter = options.filter == "gaussian" ? PixelFilter::gaussian() : PixelFilter::box();
+  settings.integrator.maxDepth = options.maxDepth;
+  settings.integrator.estimator = estimatorOf(options.estimator);
+  for (const std::string& layer : options.layers) {
+    settings.albedoLayer |= layer == "albedo";
+    settings.normalLayer |= layer == "normal";
+    settings.varianceLayer |= layer == "variance";
+  }
+
+  // ---- Render.
+  json runs = json::array();
+  std::vector<RenderResult> results;
+  {
+    ProgressLine progress;
+    for (size_t i = 0; i < materials.size(); ++i) {
+      MaterialToRender& material = materials[i];
+      const Scene scene = makePresetScene(preset, std::move(material.model), environment, resolution->width,
+                                          resolution->height);
+      const std::string step = gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
+      const ProgressCallback report = progress.callback("render " + step + material.label);
+      RenderResult result = render(scene, settings, [&](double fraction) {
+        if (report) report(progressBar(fraction), fraction);
+      });
+      const RenderStatistics& stats = result.statistics;
+      json run{{"label", material.label},
+               {"material", material.completed},
+               {"seconds", stats.seconds},
+               {"samples", stats.samples},
+               {"vertices", stats.vertices},
+               {"samples_per_second", double(stats.samples) / stats.seconds},
+               {"vertices_per_second", double(stats.vertices) / stats.seconds},
+               {"non_finite_samples", stats.nonFiniteSamples}};
+      if (preset == ScenePreset::MaterialSphere) {
+        const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
+        run["sphere"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Sphere));
+        run["background"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Background));
+      }
+      runs.push_back(std::move(run));
+      results.push_back(std::move(result));
+    }
+  }
+
+  // ---- Write.
+  if (gallery) {
+    std::vector<ContactSheetEntry> entries;
+    for (size_t i = 0; i < results.size(); ++i) entries.push_back({&results[i].color, materials[i].label});
+    ContactSheetLayout layout;
+    layout.columns = options.columns;
+    const Image sheet = composeContactSheet(entries, layout);
+    writeBoth(paths, {{"", {"R", "G", "B"}, &sheet}}, sheet, options.exposure);
+  } else {
+    const RenderResult& result = results.front();
+    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, &result.color}};
+    if (settings.albedoLayer) layers.push_back({"albedo", {"R", "G", "B"}, &result.albedo});
+    if (settings.normalLayer) layers.push_back({"normal", {"X", "Y", "Z"}, &result.normal});
+    if (settings.varianceLayer) layers.push_back({"variance", {"R", "G", "B"}, &result.variance});
+    writeBoth(paths, layers, result.color, options.exposure);
+  }
+
+  if (options.json) {
+    std::cout << json{{"scene", options.scene},
+                      {"env", options.env},
+                      {"environment", loaded.description},
+                      {"env_strength", options.envStrength},
+                      {"env_rotate_degrees", options.envRotateDegrees},
+                      {"res", {resolution->width, resolution->height}},
+                      {"spp", options.spp},
+                      {"threads", options.threads},
+                      {"seed", options.seed},
+                      {"max_depth", options.maxDepth},
+                      {"estimator", options.estimator},
+                      {"filter", options.filter},
+                      {"exr", paths.exr.string()},
+                      {"png", paths.png.string()},
+                      {"renders", runs}}
+                     .dump(2)
+              << "\n";
+    return static_cast<int>(ExitCode::Success);
+  }
+  for (const json& run : runs) {
+    std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height << ", "
+              << options.spp << " spp, " << run["seconds"].get<double>() << " s, "
+              << run["vertices_per_second"].get<double>() / 1e6 << " M path vertices/s";
+    if (run.contains("sphere"))
+      std::cout << ", sphere mean " << run["sphere"]["mean"].get<double>() << ", background mean "
+                << run["background"]["mean"].get<double>();
+    if (run["non_finite_samples"].get<uint64_t>() > 0)
+      std::cout << ", WARNING: " << run["non_finite_samples"].get<uint64_t>() << " non-finite samples dropped";
+    std::cout << "\n";
+  }
+  std::cout << "wrote " << paths.exr.string() << " and " << paths.png.string() << "\n";
+  return static_cast<int>(ExitCode::Success);
+}
+
+}  // namespace scatterlab

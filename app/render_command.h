@@ -1,0 +1,48 @@
+// `scatterlab render`: path-traced material spheres (integrator/). One material gives
+// PREFIX.exr (linear float RGB, optional albedo / normal / variance layers) and PREFIX.png
+// (sRGB, exposure); several give a gallery: one labelled contact sheet as PREFIX.exr and
+// PREFIX.png. Every input is validated before any rendering, and nothing is written unless
+// everything is written (atomic files; a failure of the second file removes the first).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace scatterlab {
+
+struct RenderCommandOptions {
+  std::vector<std::string> materials;  // inline JSON or files; two or more: a gallery
+  std::string scene = "sphere";
+  std::string env = "white";
+  double envStrength = 1.0;
+  double envRotateDegrees = 0.0;
+  int spp = 64;
+  std::string resolution = "256x256";
+  int threads = 0;
+  uint64_t seed = 1;
+  int maxDepth = 12;
+  std::string estimator = "mis";
+  std::string filter = "box";
+  double exposure = 0.0;
+  std::vector<std::string> layers;  // albedo, normal, variance
+  std::vector<std::string> labels;  // gallery labels, one per material
+  int columns = 0;
+  std::string out;
+  bool json = false;
+};
+
+CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options);
+
+// Returns 0; bad input throws MaterialError or InputError (exit 2) before anything is written.
+int runRenderCommand(const RenderCommandOptions& options);
+
+// "WxH" (or "N" for N x N) within the renderer's limits (integrator/render.h), or nothing.
+struct Resolution {
+  int width = 0, height = 0;
+};
+std::optional<Resolution> parseResolution(const std::string& text);
+
+}  // namespace scatterlab

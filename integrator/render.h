@@ -1,0 +1,56 @@
+// The film and the render loop: every pixel's samples traced by one task, pixels grouped in
+// 16 x 16 tiles spread over TBB workers; sample s of pixel p draws its random numbers from
+// SampleStream(seed, p, s) and a pixel is the mean of its own samples (pixel_filter.h), so the
+// image is the same bits for any thread count.
+//
+// Layers: colour (radiance), and on request the first vertex's albedo estimate and shading
+// normal (means over the pixel's samples, 0 where the camera ray escapes: inputs for a
+// denoiser) and the variance of the colour's pixel mean, s^2 / n with s^2 the unbiased sample
+// variance per channel (0 when spp = 1, where it cannot be estimated). A sample with a
+// non-finite value (never expected: the tests check every catalog material) contributes 0 and
+// is counted, so no NaN or infinity ever reaches the film.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "integrator/image.h"
+#include "integrator/path_tracer.h"
+#include "integrator/pixel_filter.h"
+#include "integrator/scene.h"
+
+namespace scatterlab {
+
+struct RenderSettings {
+  int samplesPerPixel = 16;
+  uint64_t seed = 1;
+  int threads = 0;  // 0: all cores
+  PixelFilter filter = PixelFilter::box();
+  IntegratorSettings integrator{};
+  bool albedoLayer = false, normalLayer = false, varianceLayer = false;
+};
+
+// Limits on what render() accepts (a pixel or sample index must fit SampleStream's 32 bits).
+inline constexpr int MaxImageSide = 16384;
+inline constexpr int64_t MaxImagePixels = int64_t(1) << 25;  // 8192 x 4096: 0.4 GB of colour, 1.6 GB with every layer
+inline constexpr int MaxSamplesPerPixel = 1 << 20;
+inline constexpr int MaxPathDepth = 1024;
+
+struct RenderStatistics {
+  uint64_t samples = 0;
+  uint64_t vertices = 0;          // surface hits of every path
+  uint64_t nonFiniteSamples = 0;  // samples dropped as non-finite (expected 0)
+  double seconds = 0.0;           // wall time of the path tracing
+};
+
+struct RenderResult {
+  Image color, albedo, normal, variance;  // the last three empty unless requested
+  RenderStatistics statistics;
+};
+
+// `progress` (may be empty) hears the fraction of tiles done, from worker threads. Settings
+// outside the limits above, or spp < 1, throw std::invalid_argument.
+RenderResult render(const Scene& scene, const RenderSettings& settings,
+                    const std::function<void(double)>& progress = {});
+
+}  // namespace scatterlab

@@ -1,0 +1,136 @@
+// The white furnace (VALIDATION.md section 7): under a constant white environment a sphere of
+// a lossless material reflects (or passes) everything, so every pixel of the image, sphere or
+// not, is 1 within noise, and the background is exactly 1. And a diffuse sphere under a
+// uniform colour renders albedo x colour.
+//
+// "Within noise": each pixel's mean over n = 128 samples is compared with the expected value
+// using the film's variance layer (the variance of the pixel mean, s^2 / n), taken as the
+// larger of the pixel's own estimate and its 3 x 3 neighbourhood's mean (robustPixelVariance:
+// glossy lobes under MIS give skewed per-sample values whose 128-sample variance estimate is
+// sometimes too small). A Gaussian error beyond 5 sigma has probability 6e-7, so over the
+// ~6,000 pixels of these tests a false failure has odds below 1%, and the seeds are fixed.
+// Models that are lossless only to a known accuracy (Kulla-Conty compensation, README: 2e-4
+// isotropic, 3e-3 anisotropic) get that accuracy added to the tolerance.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "integrator/silhouette_mask.h"
+#include "render_test_support.h"
+
+namespace scatterlab {
+namespace {
+
+using nlohmann::json;
+using namespace render_test;
+
+constexpr double Sigmas = 5.0;
+
+struct LosslessCase {
+  std::string name;
+  json material;
+  double modelTolerance;  // how far from lossless the model itself is allowed to be
+  // Every sample is exactly 1 (a weight-1 sampler and nothing else): smooth glass, and a white
+  // Lambertian, which under MIS the constant environment leaves to BSDF sampling alone. Then
+  // each pixel must be 1 to float precision, which catches a single lost path among thousands
+  // (a ray that drifts off a glass sphere after many internal reflections, say).
+  bool exact = false;
+};
+
+std::vector<LosslessCase> losslessCatalog() {
+  const json perfect = {{"eta", {1, 1, 1}}, {"k", {1e8, 1e8, 1e8}}};
+  json ggxCompensated = {{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.3}, {"multiscatter", "kulla-conty"}};
+  ggxCompensated.update(perfect);
+  json beckmannCompensated = ggxCompensated;
+  beckmannCompensated["distribution"] = "beckmann";
+  json anisotropic = ggxCompensated;
+  anisotropic["alpha"] = {0.3, 0.1};
+  return {
+      {"lambertian", {{"type", "lambertian"}, {"albedo", 1.0}}, 0.0, true},
+      {"conductor-ggx-kulla-conty", ggxCompensated, 2e-4},
+      {"conductor-beckmann-kulla-conty", beckmannCompensated, 2e-4},
+      {"conductor-anisotropic-kulla-conty", anisotropic, 3e-3},
+      {"dielectric", {{"type", "dielectric"}, {"eta", 1.5}}, 0.0, true},
+      {"thin-dielectric", {{"type", "thin-dielectric"}, {"eta", 1.5}}, 0.0, true},
+      {"rough-plastic-white", {{"type", "rough-plastic"}, {"alpha", 0.2}, {"diffuse", 1.0}, {"eta", 1.5}}, 2e-4},
+      {"eon-white", {{"type", "eon"}, {"albedo", 1.0}, {"roughness", 0.7}, {"directional_albedo", "analytic"}}, 0.0},
+      {"blend-lambertian-conductor",
+       {{"type", "blend"}, {"weight", 0.4}, {"materials", {{{"type", "lambertian"}, {"albedo", 1.0}}, ggxCompensated}}},
+       2e-4},
+  };
+}
+
+class Furnace : public testing::TestWithParam<LosslessCase> {};
+
+TEST_P(Furnace, EveryPixelIsOne) {
+  const LosslessCase& c = GetParam();
+  ASSERT_TRUE(makeBsdf(c.material)->isLossless()) << c.material.dump() << " is not lossless by its own account";
+  const Scene scene = sphereScene(c.material, Environment::constant(Rgb(1.0)), 32);
+  RenderSettings settings = settingsWith(128, 17);
+  // A depth limit loses the light of paths still inside after it (grazing entries into glass
+  // bounce near the critical angle): deep enough here that the loss is far below the noise.
+  settings.integrator.maxDepth = 200;
+  const RenderResult result = render(scene, settings);
+  const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
+  double sum = 0.0, variance = 0.0;
+  int failures = 0, spherePixels = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const Rgb value = result.color.rgb(x, y), var = robustPixelVariance(result.variance, x, y);
+      if (mask.at(x, y) == PixelRegion::Background) {
+        EXPECT_EQ(value, Rgb(1.0)) << "background pixel " << x << ", " << y;
+        continue;
+      }
+      spherePixels += mask.at(x, y) == PixelRegion::Sphere;
+      for (int k = 0; k < 3; ++k) {
+        sum += value[k];
+        variance += result.variance.rgb(x, y)[k];
+        const double tolerance = c.exact ? 1e-6 : Sigmas * std::sqrt(var[k]) + c.modelTolerance + 1e-6;
+        if (std::abs(value[k] - 1.0) > tolerance && ++failures <= 5)
+          ADD_FAILURE() << "pixel " << x << ", " << y << " channel " << k << ": " << value[k] << " +- "
+                        << std::sqrt(var[k]);
+      }
+    }
+  EXPECT_GT(spherePixels, 100);
+  EXPECT_EQ(failures, 0);
+  // All non-background pixels together: their mean is 1 within 5 standard errors.
+  const int count = 3 * (32 * 32 - int(std::count(mask.regions.begin(), mask.regions.end(), PixelRegion::Background)));
+  const double mean = sum / count, error = std::sqrt(variance) / count;
+  EXPECT_NEAR(mean, 1.0, Sigmas * error + c.modelTolerance) << "standard error " << error;
+  EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);
+  std::cout << "[ furnace  ] " << c.name << ": mean " << mean << " +- " << error << "\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalog, Furnace, testing::ValuesIn(losslessCatalog()),
+                         [](const testing::TestParamInfo<LosslessCase>& info) {
+                           std::string name = info.param.name;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+// A Lambertian sphere of albedo a under a constant colour c renders a c on every sphere pixel
+// (a convex sphere sees only the environment), and the background is c exactly.
+TEST(UniformEnvironment, DiffuseSphereRendersAlbedoTimesColour) {
+  const Rgb albedo(0.7, 0.5, 0.3), colour(0.5, 1.0, 2.0);
+  const Scene scene = sphereScene({{"type", "lambertian"}, {"albedo", {albedo.x, albedo.y, albedo.z}}},
+                                  Environment::constant(colour), 32);
+  const RenderResult result = render(scene, settingsWith(128, 23));
+  const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
+  int sphere = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const Rgb value = result.color.rgb(x, y), var = robustPixelVariance(result.variance, x, y);
+      if (mask.at(x, y) == PixelRegion::Background) {
+        EXPECT_EQ(value, colour) << "background pixel " << x << ", " << y;
+      } else if (mask.at(x, y) == PixelRegion::Sphere) {
+        ++sphere;
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(value[k], albedo[k] * colour[k], Sigmas * std::sqrt(var[k]) + 1e-6)
+              << "pixel " << x << ", " << y << " channel " << k;
+      }
+    }
+  EXPECT_GT(sphere, 100);
+}
+
+}  // namespace
+}  // namespace scatterlab

@@ -1,0 +1,181 @@
+// EXR and PNG files: round trips with layers, the sRGB encoding and exposure, and every kind
+// of bad environment map (missing, a directory, not EXR, truncated, no colour channels, not
+// 2:1, NaN or infinity, negative) rejected with a message naming the file and the problem.
+// Writes are atomic: a write that fails leaves nothing behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "integrator/environment_map_file.h"
+#include "integrator/exr_io.h"
+#include "integrator/png_io.h"
+#include "integrator/render_error.h"
+#include "render_test_support.h"
+
+namespace scatterlab {
+namespace {
+
+namespace fs = std::filesystem;
+using render_test::scratchPath;
+
+Image gradient(int width, int height, float scale = 1.0f) {
+  Image image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) image.setRgb(x, y, Rgb(x * 0.5, y * 0.25, 1e4 * (x + y)) * double(scale));
+  return image;
+}
+
+// The message of the RenderInputError that `f` throws, or a failure.
+template <typename F> std::string errorOf(const F& f) {
+  try {
+    f();
+  } catch (const RenderInputError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "no RenderInputError";
+  return "";
+}
+
+void expectMentions(const std::string& text, const std::vector<std::string>& fragments) {
+  for (const std::string& fragment : fragments)
+    EXPECT_NE(text.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << text;
+}
+
+TEST(Exr, RoundTripsFloatRgbAndLayers) {
+  const fs::path path = scratchPath("layers") += ".exr";
+  const Image color = gradient(7, 5), albedo = gradient(7, 5, 0.5f), normal = gradient(7, 5, -1.0f);
+  writeExr(path, {{"", {"R", "G", "B"}, &color}, {"albedo", {"R", "G", "B"}, &albedo}, {"normal", {"X", "Y", "Z"}, &normal}});
+  const Image back = readExrRgb(path);
+  EXPECT_EQ(back.width(), 7);
+  EXPECT_EQ(back.height(), 5);
+  EXPECT_EQ(back.data(), color.data());  // 32-bit float: bit-exact
+  fs::remove(path);
+}
+
+TEST(Exr, FailedWriteLeavesNothing) {
+  const fs::path path = scratchPath("missing-dir") / "out.exr";
+  const Image color = gradient(4, 2);
+  const std::string message = errorOf([&] { writeExr(path, {{"", {"R", "G", "B"}, &color}}); });
+  expectMentions(message, {path.string()});
+  EXPECT_FALSE(fs::exists(path.parent_path()));
+  // The image is written in full to a temporary file, then renaming it over an occupied name
+  // (a non-empty directory) fails: the temporary is removed, nothing else is touched.
+  const fs::path folder = scratchPath("occupied");
+  fs::create_directories(folder / "out.exr" / "inside");
+  expectMentions(errorOf([&] { writeExr(folder / "out.exr", {{"", {"R", "G", "B"}, &color}}); }), {"out.exr"});
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);
+  EXPECT_TRUE(fs::is_directory(folder / "out.exr" / "inside"));
+}
+
+TEST(Png, EncodesSrgbWithExposure) {
+  EXPECT_DOUBLE_EQ(srgbEncode(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(srgbEncode(1.0), 1.0);
+  EXPECT_NEAR(srgbEncode(0.18), 0.4614, 1e-4);          // middle grey
+  EXPECT_NEAR(srgbEncode(0.002), 12.92 * 0.002, 1e-15);  // the linear toe
+  Image image(3, 1);
+  image.setRgb(0, 0, Rgb(0.25, 0.5, 2.0));
+  image.setRgb(1, 0, Rgb(-1.0, 0.0, 1e9));
+  image.setRgb(2, 0, Rgb(0.1));
+  const std::vector<uint8_t> plain = toSrgb8(image), brighter = toSrgb8(image, 1.0);
+  EXPECT_EQ(plain[0], uint8_t(std::lround(255 * srgbEncode(0.25))));
+  EXPECT_EQ(brighter[0], uint8_t(std::lround(255 * srgbEncode(0.5))));  // +1 stop = x2
+  EXPECT_EQ(plain[2], 255);                                            // clamped
+  EXPECT_EQ(plain[3], 0);
+  EXPECT_EQ(plain[5], 255);
+}
+
+TEST(Png, WritesAValidHeader) {
+  const fs::path path = scratchPath("image") += ".png";
+  writePngSrgb(path, gradient(9, 4, 1e-5f));
+  std::ifstream in(path, std::ios::binary);
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_GT(bytes.size(), 24u);
+  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  EXPECT_TRUE(std::equal(signature, signature + 8, bytes.begin()));
+  const auto be32 = [&](size_t at) { return (bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3]; };
+  EXPECT_EQ(be32(16), 9);  // IHDR width
+  EXPECT_EQ(be32(20), 4);  // IHDR height
+  fs::remove(path);
+}
+
+// ---- Bad environment maps -------------------------------------------------------------------
+
+fs::path writeMap(const std::string& stem, const Image& image) {
+  const fs::path path = scratchPath(stem) += ".exr";
+  writeExr(path, {{"", {"R", "G", "B"}, &image}});
+  return path;
+}
+
+TEST(EnvironmentMapFile, ReadsAGoodMap) {
+  const fs::path path = writeMap("good", render_test::smoothSkyMap(8));
+  const EnvironmentMapFile file = readEnvironmentMap(path);
+  EXPECT_EQ(file.image.width(), 16);
+  EXPECT_EQ(file.clampedNegatives, 0u);
+}
+
+TEST(EnvironmentMapFile, ReadsTheShippedMaps) {
+  for (const char* name : {"city", "courtyard", "forest", "studio"}) {
+    const EnvironmentMapFile file = readEnvironmentMap(fs::path(SCATTERLAB_DATA_DIR) / "envmaps" / (std::string(name) + ".exr"));
+    EXPECT_EQ(file.image.width(), 1024) << name;
+    EXPECT_EQ(file.image.height(), 512) << name;
+    EXPECT_NO_THROW(Environment::fromMap(file.image)) << name;
+  }
+}
+
+TEST(EnvironmentMapFile, RejectsMissingFilesAndDirectories) {
+  const fs::path missing = scratchPath("absent") += ".exr";
+  expectMentions(errorOf([&] { readEnvironmentMap(missing); }), {missing.string(), "no such file"});
+  const fs::path directory = scratchPath("a-directory");
+  fs::create_directories(directory);
+  expectMentions(errorOf([&] { readEnvironmentMap(directory); }), {directory.string(), "is a directory"});
+}
+
+TEST(EnvironmentMapFile, RejectsFilesThatAreNotExr) {
+  const fs::path text = scratchPath("text") += ".exr";
+  std::ofstream(text) << "this is not an image\n";
+  expectMentions(errorOf([&] { readEnvironmentMap(text); }), {text.string(), "cannot be read as OpenEXR"});
+  // A real map cut in half.
+  const fs::path whole = writeMap("whole", render_test::smoothSkyMap(32));
+  const fs::path truncated = scratchPath("truncated") += ".exr";
+  fs::copy_file(whole, truncated);
+  fs::resize_file(truncated, fs::file_size(whole) / 2);
+  expectMentions(errorOf([&] { readEnvironmentMap(truncated); }), {truncated.string(), "cannot be read as OpenEXR"});
+}
+
+TEST(EnvironmentMapFile, RejectsFilesWithoutColour) {
+  const fs::path path = scratchPath("normals") += ".exr";
+  const Image image = gradient(8, 4);
+  writeExr(path, {{"normal", {"X", "Y", "Z"}, &image}});
+  expectMentions(errorOf([&] { readEnvironmentMap(path); }), {path.string(), "normal.X", "R, G and B"});
+}
+
+TEST(EnvironmentMapFile, RejectsMapsThatAreNotEquirectangular) {
+  const fs::path path = writeMap("square", Image(16, 16, 3, 1.0f));
+  expectMentions(errorOf([&] { readEnvironmentMap(path); }), {path.string(), "16 x 16", "width = 2 x height"});
+}
+
+TEST(EnvironmentMapFile, RejectsNonFiniteValues) {
+  for (const float bad : {NAN, INFINITY}) {
+    Image image = render_test::smoothSkyMap(8);
+    image.pixel(5, 3)[2] = bad;
+    const fs::path path = writeMap("nonfinite", image);
+    expectMentions(errorOf([&] { readEnvironmentMap(path); }), {path.string(), "pixel (5, 3) channel B", "finite"});
+  }
+}
+
+TEST(EnvironmentMapFile, RejectsNegativeValuesAndClampsRoundOff) {
+  Image image = render_test::smoothSkyMap(8);
+  image.pixel(4, 2)[1] = -0.5f;
+  const fs::path bad = writeMap("negative", image);
+  expectMentions(errorOf([&] { readEnvironmentMap(bad); }), {bad.string(), "pixel (4, 2) channel G is -0.5", ">= 0"});
+  // Out-of-gamut round-off, far below 1% of the mean: set to 0 and counted.
+  image.pixel(4, 2)[1] = -1e-4f;
+  const EnvironmentMapFile file = readEnvironmentMap(writeMap("roundoff", image));
+  EXPECT_EQ(file.clampedNegatives, 1u);
+  EXPECT_FLOAT_EQ(float(file.mostNegative), -1e-4f);
+  EXPECT_EQ(file.image.pixel(4, 2)[1], 0.0f);
+}
+
+}  // namespace
+}  // namespace scatterlab
