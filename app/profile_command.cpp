@@ -249,9 +249,8 @@ int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& lo
   compare.annuli = options.bins;
   compare.burleyFit = loaded.material.burleyFit;
   ProgressLine progress;
-  const ProgressCallback report = progress.callback("walk");
-  const ProfileComparison comparison = compareProfilesWithWalk(
-      loaded.material.medium, compare, report ? WalkProgress([&](double f) { report("", f); }) : WalkProgress());
+  const ProfileComparison comparison =
+      compareProfilesWithWalk(loaded.material.medium, compare, progress.walkCallback("walk"));
   progress.clear();
   if (options.json)
     std::cout << comparisonJson(loaded, comparison).dump(2) << "\n";
@@ -318,9 +317,7 @@ int runProfileCommand(const ProfileCommandOptions& options) {
     ProgressLine progress;
     for (int c = 0; c < 3; ++c) {
       const HalfSpaceWalkSettings settings = walkSettings(options, loaded.material.medium, c, edges);
-      const ProgressCallback report = progress.callback(std::string("walk ") + ChannelNames[c]);
-      ChannelWalk walk{simulateHalfSpace(settings, report ? WalkProgress([&](double f) { report("", f); })
-                                                          : WalkProgress()),
+      ChannelWalk walk{simulateHalfSpace(settings, progress.walkCallback(std::string("walk ") + ChannelNames[c])),
                        std::nullopt};
       if (settings.eta == 1.0 && settings.g == 0.0 && settings.incidentCosTheta == 1.0)
         walk.exactTotal = ChandrasekharH(settings.albedo).directionalAlbedo(1.0);

@@ -103,9 +103,7 @@ int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
     HalfSpaceWalkSettings settings =
         fitting::burleyShapeWalkSettings(albedo, options.paths, deriveSeed(options.seed, i), options.annulusWidth);
     settings.threads = options.threads;
-    const ProgressCallback report = progress.callback("walk at A " + std::to_string(albedo));
-    const HalfSpaceWalkResult walk =
-        simulateHalfSpace(settings, report ? WalkProgress([&](double f) { report("", f); }) : WalkProgress());
+    const HalfSpaceWalkResult walk = simulateHalfSpace(settings, progress.walkCallback("walk at A " + std::to_string(albedo)));
     fits.push_back(fitting::fitBurleyShapeFactor(walk, albedo));
   }
   progress.clear();
