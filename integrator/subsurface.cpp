@@ -89,6 +89,7 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
   Rgb weight(1.0);
   Vec3d p = inward.origin, d = inward.direction;
   for (int event = 0; event < MaxWalkEvents; ++event) {
+    if (!(weight.x + weight.y + weight.z > 0)) return std::nullopt;  // every channel absorbed
     const double boundary = scene.intersectShape(shape, Ray{p, d}, 0.0, Infinity);
     if (boundary == Infinity) return std::nullopt;  // outside a shape that is not closed
     // The channel of this flight, with probabilities proportional to the walk's weights.

@@ -127,20 +127,22 @@ TEST(RenderCli, SameImageForOneAndTwoThreads) {
   EXPECT_EQ(readBytes(one.string() + ".png"), readBytes(two.string() + ".png"));
 }
 
-// Jensen et al. 2001's measured media on spheres of 1 cm ("scale": 10), both ways: the
-// diffusion profile and the volumetric random walk. Every sphere renders finite and lit.
+// The gallery of Jensen et al. 2001's measured media (Marble on a sphere of 1 cm, "scale": 10;
+// Skin1 behind a rough boundary, Ketchup and Wholemilk at 1 mm), both ways: the diffusion
+// profile and the volumetric random walk. Every sphere renders finite and lit.
 TEST(RenderCli, SubsurfaceGalleryInBothModes) {
   for (const char* mode : {"diffusion", "walk"}) {
     const fs::path prefix = uniquePath(std::string("subsurface-") + mode);
     const ProcessResult run = runScatterlab(
         {"render", R"({"type":"subsurface","medium":"Marble","scale":10})",
          R"({"type":"subsurface","medium":"Skin1","profile":"beam-diffusion","boundary":"rough","roughness":0.2})",
-         R"({"type":"subsurface","medium":"Ketchup","profile":"dipole"})", "--res", "16", "--spp", "2",
+         R"({"type":"subsurface","medium":"Ketchup","profile":"dipole"})",
+         R"({"type":"subsurface","medium":"Wholemilk","profile":"better-dipole"})", "--res", "16", "--spp", "2",
          "--subsurface", mode, "--out", prefix.string(), "--json"});
     ASSERT_EQ(run.exitCode, 0) << describe(run);
     const json out = json::parse(run.out);
     EXPECT_EQ(out["subsurface"], mode);
-    ASSERT_EQ(out["renders"].size(), 3u);
+    ASSERT_EQ(out["renders"].size(), 4u);
     for (const json& r : out["renders"]) {
       EXPECT_EQ(r["non_finite_samples"], 0) << r.dump();
       EXPECT_GT(r["sphere"]["n"].get<int>(), 0) << r.dump();
