@@ -11,6 +11,7 @@
 #include "app/lab/lab_command.h"
 #include "app/models_command.h"
 #include "app/profile_command.h"
+#include "app/shape_factor_command.h"
 #include "app/render_command.h"
 #include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
@@ -52,6 +53,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* profile = addProfileCommand(app, profileOptions);
   FitCommandOptions fitOptions;
   const CLI::App* fit = addFitCommand(app, fitOptions);
+  ShapeFactorCommandOptions shapeFactorOptions;
+  const CLI::App* shapeFactor = addShapeFactorCommand(app, shapeFactorOptions);
   RenderCommandOptions renderOptions;
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
   LabCommandOptions labOptions;
@@ -69,6 +72,7 @@ int runCli(int argc, char** argv) {
     if (*synth) return runSynthCommand(synthOptions);
     if (*profile) return runProfileCommand(profileOptions);
     if (*fit) return runFitCommand(fitOptions);
+    if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
     if (*renderCommand) return runRenderCommand(renderOptions);
     if (*lab) return runLabCommand(labOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);

@@ -47,6 +47,17 @@ CLI::Validator numberIn(const ValueRange& range, const std::string& what) {
       range.describe());
 }
 
+void addSeedAndThreadOptions(CLI::App* command, uint64_t& seed, int& threads, const std::string& work) {
+  command->add_option("--seed", seed, "Seed of the " + work + "; the same seed gives the same numbers")
+      ->type_name("INTEGER")
+      ->transform(integerIn(0))
+      ->capture_default_str();
+  command->add_option("--threads", threads, "Worker threads of the " + work + ", 0 for all cores (same result)")
+      ->type_name("INTEGER")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+}
+
 CLI::Validator integerIn(uint64_t lo, uint64_t hi) {
   const std::string range = hi == std::numeric_limits<uint64_t>::max()
                                 ? ">= " + std::to_string(lo)

@@ -22,6 +22,10 @@ CLI::Validator numberIn(const ValueRange& range, const std::string& what = "a nu
 // CLI::Option::transform so that the rewritten text is what CLI11 converts.
 CLI::Validator integerIn(uint64_t lo, uint64_t hi = std::numeric_limits<uint64_t>::max());
 
+// --seed and --threads of a command whose random `work` ("walk") gives the same numbers for a
+// seed on any number of threads (0: all cores).
+void addSeedAndThreadOptions(CLI::App* command, uint64_t& seed, int& threads, const std::string& work);
+
 // The chi-square grid "COSxPHI": cos(theta) cells x phi cells.
 struct GridSize {
   int cosThetaCells = 0;

@@ -10,9 +10,11 @@
 #include "app/option_values.h"
 #include "app/profile_annuli.h"
 #include "app/progress.h"
+#include "materials/bssrdf/annulus_profile.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
-#include "validation/half_space_reference.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "validation/half_space_reference.h"
+#include "validation/profile_comparison.h"
 
 namespace scatterlab {
 
@@ -66,6 +68,18 @@ HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const S
 }
 
 void checkWalkOptions(const ProfileCommandOptions& options) {
+  if (options.compare) {
+    if (options.reference.empty()) throw InputError("--compare: compares the models with the walk; allowed: only with --reference walk");
+    const char* own = !options.albedo.empty() ? "--albedo" : options.eta ? "--eta" : options.g ? "--g" : nullptr;
+    if (own)
+      throw InputError(std::string(own) +
+                       ": with --compare the walk and every model share the material's medium; allowed: change the "
+                       "material instead");
+    const char* grid = options.minRadius ? "--min-radius" : options.maxRadius ? "--max-radius" : nullptr;
+    if (grid)
+      throw InputError(std::string(grid) + ": --compare chooses its own annuli (out to twice the widest profile); "
+                                           "allowed: --bins for their number");
+  }
   if (!options.reference.empty()) {
     if (!options.albedo.empty() && options.albedo.size() != 1 && options.albedo.size() != 3)
       throw InputError("--albedo: " + std::to_string(options.albedo.size()) +
@@ -139,6 +153,104 @@ json walkJson(const ChannelWalk& walk) {
   return out;
 }
 
+json rgbJson(const Rgb& v) { return json::array({v.x, v.y, v.z}); }
+
+std::string percent(double v) { return fixed("%+.1f%%", 100.0 * v); }
+
+// `text` right-aligned (negative width: left-aligned) in a column of |width| characters.
+std::string column(const std::string& text, int width) {
+  const size_t w = size_t(std::abs(width));
+  if (text.size() >= w) return text;
+  return width < 0 ? text + std::string(w - text.size(), ' ') : std::string(w - text.size(), ' ') + text;
+}
+
+void printComparison(const LoadedMaterial& loaded, const ProfileComparison& comparison) {
+  const ScatteringMedium& m = comparison.medium;
+  std::cout << "material (every default filled in): " << loaded.completed.dump() << "\n";
+  std::cout << "medium: sigma_s " << fixed("%.4g", m.sigmaS.x) << " " << fixed("%.4g", m.sigmaS.y) << " "
+            << fixed("%.4g", m.sigmaS.z) << ", sigma_a " << fixed("%.4g", m.sigmaA.x) << " " << fixed("%.4g", m.sigmaA.y)
+            << " " << fixed("%.4g", m.sigmaA.z) << " mm^-1, g " << m.g << ", eta " << m.eta << "\n";
+  std::cout << "walk: " << comparison.walks[0].settings.paths
+            << " paths per channel, normal incidence; profile errors on " << comparison.edges.size() - 1
+            << " annuli to " << fixed("%.4g", comparison.edges.back()) << " mm plus the power beyond\n\n";
+  std::cout << "channel  albedo     walk total          single scattering   multiple only       noise floor\n";
+  for (int c = 0; c < 3; ++c) {
+    const HalfSpaceWalkResult& w = comparison.walks[size_t(c)];
+    std::cout << "  " << ChannelNames[c] << "      " << fixed("%-10.6g", w.settings.albedo) << " "
+              << fixed("%.4f", comparison.walkTotal[c]) << " +- " << fixed("%-8.4f", comparison.walkStdError[c]) << " "
+              << fixed("%.4f", w.singleReflectance) << " +- " << fixed("%-8.4f", w.singleStdError) << " "
+              << fixed("%.4f", comparison.walkMultipleTotal[c]) << " +- "
+              << fixed("%-8.4f", comparison.walkMultipleStdError[c]) << " " << fixed("%.3f", comparison.noiseFloor[c])
+              << "\n";
+  }
+  std::cout << "\nagainst the walk (relative errors): total diffuse reflectance, and R(r) weighted by r\n"
+            << "model           ch  total     all orders: total  R(r)    multiple only: total  R(r)\n";
+  for (const ModelComparison& model : comparison.models) {
+    const ProfileErrors& e = model.errors;
+    for (int c = 0; c < 3; ++c)
+      std::cout << column(c == 0 ? toString(model.model) : "", -16) << ChannelNames[c] << "   "
+                << fixed("%-9.4f", e.total[c]) << " " << column(percent(e.totalError[c]), 18) << "  "
+                << fixed("%6.1f%%", 100.0 * e.profileError[c]) << " " << column(percent(e.multipleTotalError[c]), 21)
+                << "  "
+                << fixed("%6.1f%%", 100.0 * e.multipleProfileError[c]) << "\n";
+  }
+}
+
+json comparisonJson(const LoadedMaterial& loaded, const ProfileComparison& comparison) {
+  const ScatteringMedium& m = comparison.medium;
+  json walks = json::array();
+  for (const HalfSpaceWalkResult& w : comparison.walks)
+    walks.push_back({{"albedo", w.settings.albedo},
+                     {"extinction", w.settings.extinction},
+                     {"paths", w.settings.paths},
+                     {"seed", w.settings.seed},
+                     {"total_reflectance", w.totalReflectance},
+                     {"std_error", w.totalStdError},
+                     {"single_scattering", w.singleReflectance},
+                     {"single_scattering_std_error", w.singleStdError}});
+  json models = json::array();
+  for (const ModelComparison& model : comparison.models)
+    models.push_back({{"model", toString(model.model)},
+                      {"total_reflectance", rgbJson(model.errors.total)},
+                      {"total_error", rgbJson(model.errors.totalError)},
+                      {"profile_error", rgbJson(model.errors.profileError)},
+                      {"multiple_total_error", rgbJson(model.errors.multipleTotalError)},
+                      {"multiple_profile_error", rgbJson(model.errors.multipleProfileError)}});
+  return {{"material", loaded.completed},
+          {"label", loaded.label},
+          {"medium", {{"sigma_s", rgbJson(m.sigmaS)}, {"sigma_a", rgbJson(m.sigmaA)}, {"g", m.g}, {"eta", m.eta}}},
+          {"errors",
+           "relative to the walk: total (model / walk - 1) and R(r) weighted by r (L1 distance of the radial power "
+           "distributions over the walk's total), against all orders and against multiple scattering only"},
+          {"radius_edges", comparison.edges},
+          {"walk",
+           {{"channels", std::move(walks)},
+            {"total", rgbJson(comparison.walkTotal)},
+            {"std_error", rgbJson(comparison.walkStdError)},
+            {"multiple_total", rgbJson(comparison.walkMultipleTotal)},
+            {"multiple_std_error", rgbJson(comparison.walkMultipleStdError)},
+            {"profile_error_noise_floor", rgbJson(comparison.noiseFloor)}}},
+          {"models", std::move(models)}};
+}
+
+int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& loaded) {
+  ProfileComparisonOptions compare;
+  compare.paths = options.paths;
+  compare.seed = options.seed;
+  compare.threads = options.threads;
+  compare.annuli = options.bins;
+  compare.burleyFit = loaded.material.burleyFit;
+  ProgressLine progress;
+  const ProfileComparison comparison =
+      compareProfilesWithWalk(loaded.material.medium, compare, progress.walkCallback("walk"));
+  progress.clear();
+  if (options.json)
+    std::cout << comparisonJson(loaded, comparison).dump(2) << "\n";
+  else
+    printComparison(loaded, comparison);
+  return static_cast<int>(ExitCode::Success);
+}
+
 }  // namespace
 
 CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
@@ -175,14 +287,10 @@ CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
       ->type_name("INTEGER")
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
-  command->add_option("--seed", options.seed, "Seed of the walk; the same seed gives the same numbers")
-      ->type_name("INTEGER")
-      ->transform(integerIn(0))
-      ->capture_default_str();
-  command->add_option("--threads", options.threads, "Worker threads of the walk, 0 for all cores (same result)")
-      ->type_name("INTEGER")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
+  addSeedAndThreadOptions(command, options.seed, options.threads, "walk");
+  command->add_flag("--compare", options.compare,
+                    "With --reference walk: every profile model (dipole, better-dipole, beam-diffusion, burley) on the "
+                    "material's medium against the walk, in one table of relative errors");
   command->add_flag("--json", options.json, "Print one JSON document");
   return command;
 }
@@ -190,6 +298,7 @@ CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
 int runProfileCommand(const ProfileCommandOptions& options) {
   checkWalkOptions(options);
   const LoadedMaterial loaded = loadSubsurface(options.material);
+  if (options.compare) return runComparison(options, loaded);
   const RadialProfile& profile = *loaded.material.profile;
   const std::vector<double> edges = radiusEdges(options, profile);
 
@@ -200,9 +309,7 @@ int runProfileCommand(const ProfileCommandOptions& options) {
     ProgressLine progress;
     for (int c = 0; c < 3; ++c) {
       const HalfSpaceWalkSettings settings = walkSettings(options, loaded.material.medium, c, edges);
-      const ProgressCallback report = progress.callback(std::string("walk ") + ChannelNames[c]);
-      ChannelWalk walk{simulateHalfSpace(settings, report ? WalkProgress([&](double f) { report("", f); })
-                                                          : WalkProgress()),
+      ChannelWalk walk{simulateHalfSpace(settings, progress.walkCallback(std::string("walk ") + ChannelNames[c])),
                        std::nullopt};
       if (settings.eta == 1.0 && settings.g == 0.0 && settings.incidentCosTheta == 1.0)
         walk.exactTotal = ChandrasekharH(settings.albedo).directionalAlbedo(1.0);

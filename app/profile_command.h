@@ -1,7 +1,8 @@
 // `scatterlab profile`: a subsurface material's radial profile per channel — R(r) averaged over
 // annuli of a radius grid and the total diffuse reflectance — and, with --reference walk, the
 // same from the half-space random walk (materials/bssrdf/half_space_walk.h) with standard
-// errors, so a diffusion profile can be read next to its ground truth.
+// errors, so a diffusion profile can be read next to its ground truth. With --compare, every
+// model on the material's medium against the walk in one table (validation/profile_comparison.h).
 #pragma once
 
 #include <cstdint>
@@ -23,6 +24,7 @@ struct ProfileCommandOptions {
   int bins = 24;
   uint64_t seed = 1;
   int threads = 0;
+  bool compare = false;             // every model against the walk (needs --reference walk)
   bool json = false;
 };
 

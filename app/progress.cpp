@@ -32,6 +32,11 @@ ProgressCallback ProgressLine::callback(std::string prefix) {
   };
 }
 
+WalkProgress ProgressLine::walkCallback(std::string prefix) {
+  if (!enabled_) return {};
+  return [this, prefix = std::move(prefix)](double fraction) { draw(prefix, fraction); };
+}
+
 void ProgressLine::draw(const std::string& text, double fraction) {
   const std::lock_guard lock(mutex_);
   const auto now = std::chrono::steady_clock::now();

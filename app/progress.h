@@ -7,6 +7,7 @@
 #include <string>
 
 #include "validation/bsdf_check.h"
+#include "validation/half_space_reference.h"
 
 namespace scatterlab {
 
@@ -20,6 +21,9 @@ class ProgressLine {
   bool enabled() const { return enabled_; }
   // A callback for the kit that shows "<prefix> <stage> <percent>".
   ProgressCallback callback(std::string prefix);
+  // A callback for the half-space walk (fraction only) that shows "<prefix> <percent>"; empty
+  // when the line is disabled.
+  WalkProgress walkCallback(std::string prefix);
   // Erases the line, so that what is printed next starts on a clean line.
   void clear();
 

@@ -22,6 +22,7 @@
 #include "integrator/scene_presets.h"
 #include "integrator/silhouette_mask.h"
 #include "materials/bsdf/registry.h"
+#include "materials/bssrdf/subsurface_registry.h"
 
 namespace scatterlab {
 
@@ -54,7 +55,8 @@ CLI::Validator resolutionValidator() {
 struct MaterialToRender {
   std::string label;
   json completed;
-  std::unique_ptr<BsdfModel> model;
+  std::unique_ptr<BsdfModel> model;               // a BSDF, or
+  std::optional<SubsurfaceMaterial> subsurface;   // a subsurface material
 };
 
 std::string defaultLabel(const std::string& argument, const json& material) {
@@ -65,7 +67,15 @@ std::string defaultLabel(const std::string& argument, const json& material) {
 MaterialToRender loadMaterial(const std::string& argument) {
   const json material = loadMaterialArgument(argument);
   try {
-    return {defaultLabel(argument, material), completeMaterial(material), makeBsdf(material)};
+    if (!isSubsurfaceMaterial(material))
+      return {defaultLabel(argument, material), completeMaterial(material), makeBsdf(material), std::nullopt};
+    SubsurfaceMaterial subsurface = makeSubsurface(material);
+    try {
+      makeSubsurfaceBoundary(subsurface);  // the renderer's own limits on the boundary
+    } catch (const std::invalid_argument& error) {
+      throw MaterialError(std::string("\"boundary\": ") + error.what());
+    }
+    return {defaultLabel(argument, material), completeMaterial(material), nullptr, std::move(subsurface)};
   } catch (const MaterialError& error) {
     if (isInlineMaterial(argument)) throw;
     throw MaterialError("material file " + inQuotes(argument) + ": " + error.what());
@@ -208,6 +218,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
                       "sampling only for direct light): for checking that they agree")
       ->check(choiceOf({"mis", "bsdf", "light"}, "an estimator"))
       ->capture_default_str();
+  command->add_option("--subsurface", options.subsurface,
+                      "How subsurface materials render: diffusion (the BSSRDF's profile, probe-ray exit points) or "
+                      "walk (brute-force volumetric random walk inside the sphere, the reference)")
+      ->check(choiceOf(subsurfaceModeNames(), "a subsurface mode"))
+      ->capture_default_str();
   command->add_option("--filter", options.filter, "Pixel filter: box (1 pixel) or gaussian (sigma 0.5, radius 1.5 px)")
       ->check(choiceOf({"box", "gaussian"}, "a filter"))
       ->capture_default_str();
@@ -250,6 +265,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
   const Environment& environment = loaded.environment;
   const OutputPaths paths = checkOutput(options.out);
 
+  const SubsurfaceMode subsurfaceMode = *findSubsurfaceMode(options.subsurface);
+
   RenderSettings settings;
   settings.samplesPerPixel = options.spp;
   settings.seed = options.seed;
@@ -270,8 +287,11 @@ int runRenderCommand(const RenderCommandOptions& options) {
     ProgressLine progress;
     for (size_t i = 0; i < materials.size(); ++i) {
       MaterialToRender& material = materials[i];
-      const Scene scene = makePresetScene(preset, std::move(material.model), environment, resolution->width,
-                                          resolution->height);
+      const Scene scene = material.subsurface
+                              ? makePresetScene(preset, *material.subsurface, subsurfaceMode, environment,
+                                                resolution->width, resolution->height)
+                              : makePresetScene(preset, std::move(material.model), environment, resolution->width,
+                                                resolution->height);
       const std::string step = gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
       const ProgressCallback report = progress.callback("render " + step + material.label);
       RenderResult result = render(scene, settings, [&](double fraction) {
@@ -325,6 +345,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
                       {"seed", options.seed},
                       {"max_depth", options.maxDepth},
                       {"estimator", options.estimator},
+                      {"subsurface", options.subsurface},
                       {"filter", options.filter},
                       {"exr", paths.exr.string()},
                       {"png", paths.png.string()},

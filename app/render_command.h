@@ -25,6 +25,7 @@ struct RenderCommandOptions {
   uint64_t seed = 1;
   int maxDepth = 12;
   std::string estimator = "mis";
+  std::string subsurface = "diffusion";  // diffusion or walk (integrator/subsurface.h)
   std::string filter = "box";
   double exposure = 0.0;
   std::vector<std::string> layers;  // albedo, normal, variance

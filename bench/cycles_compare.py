@@ -2,7 +2,7 @@
 """Render-time comparison of `scatterlab render` with Blender Cycles on the peers' scene.
 
     bench/cycles_compare.py [--res 256 512] [--spp 64] [--threads 2] [--repeats 3]
-                            [--materials diffuse metal glass roughglass]
+                            [--materials diffuse metal glass roughglass sss_burley sss_rw]
                             [--envs furnace synthetic] [--stats] [--json FILE]
 
 For every (environment, resolution, material) it runs scatterlab and Cycles alternately
@@ -11,7 +11,9 @@ medians: scatterlab's whole-process wall time (start-up, map loading, sampling t
 path tracing, writing EXR and PNG) and its path-tracing time alone, Cycles' render_s (the
 render call: scene sync, BVH, path tracing; Blender's own start-up is not counted), their
 ratio, and path vertices per second. The requirement (issue 6) is ratio <= 0.5 for diffuse,
-rough metal, glass and rough glass at 256 and 512 pixels, 64 spp, 2 threads.
+rough metal, glass and rough glass at 256 and 512 pixels, 64 spp, 2 threads. sss_burley and
+sss_rw (not in the default list) time subsurface spheres against Cycles' Principled
+subsurface methods (issue 7): scatterlab's diffusion mode and its random walk.
 
 The materials are set as bench/cycles/cycles_sphere.py sets them: colour 1, roughness 0.3
 (GGX alpha 0.09), IOR 1.5; Cycles' Principled metal with base colour 1 has F = 1. "synthetic"
@@ -39,7 +41,14 @@ MATERIALS = {
     "metal": {"type": "conductor", "distribution": "ggx", "alpha": 0.09, "eta": [1, 1, 1], "k": [1e8, 1e8, 1e8]},
     "glass": {"type": "dielectric", "eta": 1.5},
     "roughglass": {"type": "rough-dielectric", "distribution": "ggx", "alpha": 0.09, "eta": 1.5},
+    # cycles_sphere.py's Principled subsurface: colour 1, radius 0.1 for every channel, IOR 1.4.
+    # Here Burley's profile with that diffuse colour and mean free path, and the random walk of
+    # the medium it implies (an albedo-1 medium: both render 1 in the furnace).
+    "sss_burley": {"type": "subsurface", "profile": "burley", "reflectance": 1, "mfp": 0.1, "eta": 1.4},
+    "sss_rw": {"type": "subsurface", "profile": "burley", "reflectance": 1, "mfp": 0.1, "eta": 1.4},
 }
+SUBSURFACE_MODE = {"sss_burley": "diffusion", "sss_rw": "walk"}
+BSDF_MATERIALS = ["diffuse", "metal", "glass", "roughglass"]
 
 
 def blender_env():
@@ -79,6 +88,8 @@ def run_cycles(blender, material, env, res, spp, threads, prefix):
 def run_scatterlab(exe, material, env, res, spp, threads, prefix):
     cmd = [exe, "render", json.dumps(MATERIALS[material]), "--env", "white" if env == "furnace" else env,
            "--res", f"{res}x{res}", "--spp", str(spp), "--threads", str(threads), "--out", prefix, "--json"]
+    if material in SUBSURFACE_MODE:
+        cmd += ["--subsurface", SUBSURFACE_MODE[material]]
     start = time.perf_counter()
     done = subprocess.run(cmd, capture_output=True, text=True)
     wall = time.perf_counter() - start
@@ -101,7 +112,7 @@ def main():
     ap.add_argument("--spp", type=int, default=64)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--repeats", type=int, default=3)
-    ap.add_argument("--materials", nargs="+", default=list(MATERIALS), choices=list(MATERIALS))
+    ap.add_argument("--materials", nargs="+", default=BSDF_MATERIALS, choices=list(MATERIALS))
     ap.add_argument("--envs", nargs="+", default=["furnace", "synthetic"])
     ap.add_argument("--scatterlab", default=str(ROOT / "build" / "release" / "app" / "scatterlab"))
     ap.add_argument("--out-dir", default=None, help="where images and logs go (default: a temporary directory)")

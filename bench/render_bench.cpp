@@ -3,8 +3,8 @@
 //   lookup and sampling (1024 x 512, out of cache as in a render), one BSDF sample through the
 //   virtual interface against the same call on the concrete `final` type (the renderer's one
 //   dispatch per path vertex), and tracePath for the four materials of the Cycles comparison
-//   in the white furnace and under a map, reported as samples and path vertices per second
-//   (one thread). bench/cycles_compare.py times whole renders against Blender Cycles.
+//   in the white furnace and under a map, and subsurface spheres (diffusion and random walk)
+//   under the map, reported as samples and path vertices per second (one thread). bench/cycles_compare.py times whole renders against Blender Cycles.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -14,6 +14,7 @@
 #include "integrator/scene_presets.h"
 #include "materials/bsdf/lambertian.h"
 #include "materials/bsdf/registry.h"
+#include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/warp.h"
 
 namespace scatterlab {
@@ -118,10 +119,7 @@ const nlohmann::json& peerMaterial(int index) {
 }
 
 // Camera samples of the 256 x 256 peers' scene, pixels in a fixed pseudo-random order.
-void TracePath(benchmark::State& state) {
-  const bool map = state.range(1) != 0;
-  const Scene scene = makePresetScene(ScenePreset::MaterialSphere, makeBsdf(peerMaterial(int(state.range(0)))),
-                                      map ? mapEnvironment() : Environment::constant(Rgb(1.0)), 256, 256);
+void traceCameraSamples(benchmark::State& state, const Scene& scene) {
   const IntegratorSettings settings;
   uint64_t sample = 0, vertices = 0;
   for (auto _ : state) {
@@ -135,9 +133,28 @@ void TracePath(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(sample));
   state.counters["vertices/s"] = benchmark::Counter(double(vertices), benchmark::Counter::kIsRate);
 }
+
+void TracePath(benchmark::State& state) {
+  const bool map = state.range(1) != 0;
+  const Scene scene = makePresetScene(ScenePreset::MaterialSphere, makeBsdf(peerMaterial(int(state.range(0)))),
+                                      map ? mapEnvironment() : Environment::constant(Rgb(1.0)), 256, 256);
+  traceCameraSamples(state, scene);
+}
 BENCHMARK(TracePath)
     ->ArgNames({"material", "map"})
     ->ArgsProduct({{0, 1, 2, 3}, {0, 1}});
+
+// Subsurface spheres of 1 cm (scale 10) under the map: Jensen's Skin1 and Marble (Burley's
+// profile), in diffusion mode and as the random walk (integrator/subsurface.h).
+void TraceSubsurfacePath(benchmark::State& state) {
+  const char* medium = state.range(0) == 0 ? "Skin1" : "Marble";
+  const SubsurfaceMode mode = state.range(1) == 0 ? SubsurfaceMode::Diffusion : SubsurfaceMode::RandomWalk;
+  const Scene scene = makePresetScene(ScenePreset::MaterialSphere,
+                                      makeSubsurface({{"type", "subsurface"}, {"medium", medium}, {"scale", 10.0}}), mode,
+                                      mapEnvironment(), 256, 256);
+  traceCameraSamples(state, scene);
+}
+BENCHMARK(TraceSubsurfacePath)->ArgNames({"marble", "walk"})->ArgsProduct({{0, 1}, {0, 1}});
 
 }  // namespace
 }  // namespace scatterlab

@@ -85,12 +85,50 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
     const std::optional<BsdfSample> sample = bsdf.sample(wi, uLobe, u, TransportMode::Radiance);
     if (bounce == 0 && sample) out.albedo = sample->weight;
     if (!sample || sample->weight == Rgb(0.0)) break;
-    throughput *= sample->weight;
-    if (hasAny(sample->lobe, LobeFlags::Transmission)) etaScale *= sample->eta * sample->eta;
-    fromDelta = sample->isDelta();
-    bsdfPdf = sample->pdf;
-    origin = hit->point;
-    ray = spawnRay(hit->point, hit->geometry.normal, sample->wo);
+    const bool entersMedium = hit->subsurface && hasAny(sample->lobe, LobeFlags::Transmission) &&
+                              glm::dot(wi, hit->geometry.normal) > 0;
+    if (entersMedium && hit->subsurface->mode == SubsurfaceMode::Diffusion) {
+      // The BSSRDF (subsurface.h): Ft(wo) without the radiance scaling, R / pdf to the probe's
+      // point, and there a vertex of the directional term Sw.
+      const SceneSubsurface& medium = *hit->subsurface;
+      const std::optional<DiffusionExit> exit =
+          sampleDiffusionExit(scene, hit->shape, medium, hit->point, hit->geometry.normal, random);
+      if (!exit) break;
+      throughput *= sample->weight * (sample->eta * sample->eta) * exit->weight;
+      ++out.vertices;
+      SurfaceInteraction exitHit;
+      exitHit.point = exit->point;
+      exitHit.geometry = exit->geometry;
+      exitHit.model = &medium.exit;
+      exitHit.shape = hit->shape;
+      const Bsdf exitBsdf = exitHit.bsdf();
+      const Vec3d& n = exit->geometry.normal;
+      if (nextEvent) out.radiance += throughput * directLighting(scene, exitHit, exitBsdf, n, random, estimator, lightSet);
+      const double uExitLobe = random.next();
+      const std::optional<BsdfSample> exitSample = exitBsdf.sample(n, uExitLobe, random.next2D());
+      if (!exitSample) break;
+      throughput *= exitSample->weight;
+      fromDelta = false;
+      bsdfPdf = exitSample->pdf;
+      origin = exit->point;
+      ray = spawnRay(exit->point, n, exitSample->wo);
+    } else if (entersMedium) {
+      // The random walk (subsurface.h): the radiance scalings of entering and leaving cancel.
+      const std::optional<WalkExit> exit = walkThroughMedium(
+          scene, hit->shape, *hit->subsurface, spawnRay(hit->point, hit->geometry.normal, sample->wo), random);
+      if (!exit) break;
+      throughput *= sample->weight * exit->weight;
+      fromDelta = true;  // no light was sampled where the walk left: emission found next counts in full
+      origin = exit->point;
+      ray = spawnRay(exit->point, exit->normal, exit->direction);
+    } else {
+      throughput *= sample->weight;
+      if (hasAny(sample->lobe, LobeFlags::Transmission)) etaScale *= sample->eta * sample->eta;
+      fromDelta = sample->isDelta();
+      bsdfPdf = sample->pdf;
+      origin = hit->point;
+      ray = spawnRay(hit->point, hit->geometry.normal, sample->wo);
+    }
 
     // Russian roulette (pbrt-v4 PathIntegrator::Li): survive with probability q = the largest
     // channel of throughput * etaScale, when below 1, and divide by it.

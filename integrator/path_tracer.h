@@ -18,11 +18,11 @@
 // counted wherever a BSDF-sampled ray finds it; a delta sun is then never found), LightOnly
 // (direct light by NEE alone, emission counted only on camera rays and after delta bounces).
 //
-// Subsurface materials plug in at one place: a vertex is processed by `scatter` (NEE, then a
-// BSDF sample that picks the next ray). A BSSRDF would, at the vertex where its transmission
-// lobe is sampled, find the exit point with probe rays against the same shape
-// (Scene::intersectShape), multiply the throughput by its profile weight and continue the loop
-// from the exit vertex, which gets NEE like any other.
+// Subsurface materials (subsurface.h) plug in where the boundary's sample is a transmission
+// into the medium: in diffusion mode the exit point is found by probe rays against the same
+// shape (Scene::intersectShape), the throughput takes the profile's weight, and the exit point
+// is a vertex with NEE like any other; in random-walk mode the path walks through the medium
+// and continues from where it leaves.
 #pragma once
 
 #include <cmath>

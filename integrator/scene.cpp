@@ -26,6 +26,14 @@ int Scene::addCheckerMaterial(std::unique_ptr<BsdfModel> even, std::unique_ptr<B
   return int(materials_.size()) - 1;
 }
 
+int Scene::addSubsurfaceMaterial(const SubsurfaceMaterial& material, SubsurfaceMode mode) {
+  if (!material.profile) throw std::invalid_argument("Scene::addSubsurfaceMaterial: no profile");
+  const int id = addMaterial(makeSubsurfaceBoundary(material));
+  subsurfaces_.push_back(std::make_unique<SceneSubsurface>(material, mode, *models_.back()));
+  materials_[size_t(id)].subsurface = subsurfaces_.back().get();
+  return id;
+}
+
 void Scene::checkMaterial(int material) const {
   if (material < 0 || material >= int(materials_.size()))
     throw std::invalid_argument("Scene: material id " + std::to_string(material) + " does not exist");
@@ -140,6 +148,7 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray, double tMax) 
     hit.light = s.light;
     hit.shape = s.shape;
     material = s.material;
+    hit.subsurface = materials_[material].subsurface;
     hit.model = materials_[material].checkerModel ? modelAt(material, s.geometry.uvAt(hit.point))
                                                   : materials_[material].model;
   } else {
@@ -147,6 +156,7 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray, double tMax) 
     hit.geometry = p.geometry.geometryAt(hit.point);
     hit.shape = p.shape;
     material = p.material;
+    hit.subsurface = materials_[material].subsurface;
     hit.model = materials_[material].checkerModel ? modelAt(material, p.geometry.uvAt(hit.point))
                                                   : materials_[material].model;
   }
@@ -166,6 +176,11 @@ double Scene::intersectShape(int shape, const Ray& ray, double tMin, double tMax
   const ShapeRef& ref = shapes_[shape];
   return ref.isSphere ? spheres_[ref.index].geometry.intersect(ray, tMin, tMax)
                       : planes_[ref.index].geometry.intersect(ray, tMin, tMax);
+}
+
+SurfaceGeometry Scene::shapeGeometry(int shape, const Vec3d& point) const {
+  const ShapeRef& ref = shapes_[size_t(shape)];
+  return ref.isSphere ? spheres_[ref.index].geometry.geometryAt(point) : planes_[ref.index].geometry.geometryAt(point);
 }
 
 std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, const Vec2d& u, LightSet set) const {

@@ -18,6 +18,7 @@
 #include "integrator/environment.h"
 #include "integrator/lights.h"
 #include "integrator/shapes.h"
+#include "integrator/subsurface.h"
 #include "materials/bsdf/bsdf.h"
 
 namespace scatterlab {
@@ -29,6 +30,7 @@ struct SurfaceMaterial {
   const BsdfModel* model = nullptr;
   const BsdfModel* checkerModel = nullptr;
   double checkerSize = 1.0;
+  const SceneSubsurface* subsurface = nullptr;  // set for a subsurface material (model: its boundary)
 };
 
 // Where a ray met the scene.
@@ -39,6 +41,7 @@ struct SurfaceInteraction {
   const BsdfModel* model = nullptr;  // the material's model at this point
   int shape = -1;                    // Scene::shape index
   int light = -1;                    // index into Scene::sphereLights(), or -1: not an emitter
+  const SceneSubsurface* subsurface = nullptr;  // the medium below, for a subsurface material
 
   // True when the model must not be mirrored to the front side (it has transmission).
   bool twoSided() const { return !hasAny(model->flags(), LobeFlags::Transmission); }
@@ -69,6 +72,9 @@ class Scene {
   // Materials; each returns the material id.
   int addMaterial(std::unique_ptr<BsdfModel> model);
   int addCheckerMaterial(std::unique_ptr<BsdfModel> even, std::unique_ptr<BsdfModel> odd, double squareSize);
+  // A subsurface material (subsurface.h): its dielectric boundary is the surface's model, and a
+  // transmission into it is continued by `mode`. Put it on closed shapes only (spheres).
+  int addSubsurfaceMaterial(const SubsurfaceMaterial& material, SubsurfaceMode mode);
 
   // Shapes; each returns the shape id.
   int addSphere(const Sphere& sphere, int material);
@@ -98,6 +104,8 @@ class Scene {
   // The nearest t in (tMin, tMax) where `ray` meets shape `shape` alone, or Infinity: probe rays
   // of a subsurface material search one object this way.
   double intersectShape(int shape, const Ray& ray, double tMin, double tMax) const;
+  // The geometry of shape `shape` at `point` (on it).
+  SurfaceGeometry shapeGeometry(int shape, const Vec3d& point) const;
 
   // ---- Lights, for next-event estimation: one light of the set chosen uniformly, then sampled.
   int lightCount(LightSet set = LightSet::All) const { return int(lights(set).size()); }
@@ -159,6 +167,7 @@ class Scene {
 
   std::vector<std::unique_ptr<BsdfModel>> models_;
   std::vector<SurfaceMaterial> materials_;
+  std::vector<std::unique_ptr<SceneSubsurface>> subsurfaces_;
   std::vector<SceneSphere> spheres_;
   std::vector<ScenePlane> planes_;
   std::vector<ShapeRef> shapes_;

@@ -1214,7 +1214,7 @@ std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material) {
   const ValidatedMaterial parsed = validateMaterial(material);
   if (parsed.model->kind != MaterialKind::Bsdf || !parsed.model->build)
     fail("type", parsed.model->type, "is a subsurface material (a BSSRDF), not a BSDF",
-         "a BSDF model here; subsurface materials go to `scatterlab check` and `scatterlab profile`");
+         "a BSDF model here; subsurface materials go to `scatterlab check`, `scatterlab profile` and `scatterlab render`");
   return parsed.model->build(parsed.parameters);
 }
 

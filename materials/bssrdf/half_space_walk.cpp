@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "materials/bsdf/fresnel.h"
 #include "materials/bssrdf/henyey_greenstein.h"
@@ -88,8 +90,13 @@ void HalfSpaceTally::add(const WalkPath& path, const std::vector<double>& radius
     ++absorbed;
   } else {
     ++escaped;
+    const bool single = path.scatteringEvents == 1;
+    singleEscaped += single;
     const size_t k = size_t(std::upper_bound(radiusEdges.begin(), radiusEdges.end(), path.exitRadius) - radiusEdges.begin());
-    if (k >= 1 && k <= counts.size()) ++counts[k - 1];
+    if (k >= 1 && k <= counts.size()) {
+      ++counts[k - 1];
+      singleCounts[k - 1] += single;
+    }
   }
 }
 
@@ -98,7 +105,11 @@ void HalfSpaceTally::merge(const HalfSpaceTally& other) {
   absorbed += other.absorbed;
   truncated += other.truncated;
   scatteringEvents += other.scatteringEvents;
-  for (size_t k = 0; k < counts.size(); ++k) counts[k] += other.counts[k];
+  singleEscaped += other.singleEscaped;
+  for (size_t k = 0; k < counts.size(); ++k) {
+    counts[k] += other.counts[k];
+    singleCounts[k] += other.singleCounts[k];
+  }
 }
 
 void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last, HalfSpaceTally& tally) {
@@ -117,23 +128,44 @@ HalfSpaceWalkResult halfSpaceWalkResult(const HalfSpaceWalkSettings& settings, c
   result.truncated = tally.truncated;
   result.scatteringEvents = tally.scatteringEvents;
   result.counts = tally.counts;
+  result.singleCounts = tally.singleCounts;
+  result.singleEscaped = tally.singleEscaped;
   const double n = double(settings.paths);
-  const double p = double(result.escaped) / n;
-  result.totalReflectance = p;
-  result.totalStdError = std::sqrt(p * (1.0 - p) / n);
+  const auto proportion = [n](uint64_t count) {
+    const double p = double(count) / n;
+    return std::pair{p, std::sqrt(p * (1.0 - p) / n)};
+  };
+  std::tie(result.totalReflectance, result.totalStdError) = proportion(result.escaped);
+  std::tie(result.singleReflectance, result.singleStdError) = proportion(result.singleEscaped);
   for (size_t k = 0; k < result.counts.size(); ++k) {
     const double area = Pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k]);
-    const double pk = double(result.counts[k]) / n;
+    const auto [pk, se] = proportion(result.counts[k]);
     result.profile.push_back(pk / area);
-    result.profileStdError.push_back(std::sqrt(pk * (1.0 - pk) / n) / area);
+    result.profileStdError.push_back(se / area);
   }
   return result;
+}
+
+std::vector<double> HalfSpaceWalkResult::multipleScatteringProfile() const {
+  const std::vector<double>& edges = settings.radiusEdges;
+  std::vector<double> out;
+  for (size_t k = 0; k < counts.size(); ++k)
+    out.push_back(double(counts[k] - singleCounts[k]) / double(settings.paths) /
+                  (Pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k])));
+  return out;
 }
 
 std::vector<double> logRadiusEdges(double first, double last, int n) {
   if (!(first > 0) || !(last > first) || n < 2) throw std::invalid_argument("logRadiusEdges: need 0 < first < last, n >= 2");
   std::vector<double> edges{0.0};
   for (int k = 0; k < n; ++k) edges.push_back(first * std::pow(last / first, double(k) / (n - 1)));
+  return edges;
+}
+
+std::vector<double> linearRadiusEdges(double last, int n) {
+  if (!(last > 0) || n < 1) throw std::invalid_argument("linearRadiusEdges: need last > 0, n >= 1");
+  std::vector<double> edges{0.0};
+  for (int k = 1; k <= n; ++k) edges.push_back(last * double(k) / double(n));
   return edges;
 }
 

@@ -10,7 +10,9 @@
 // from inside, total internal reflection included) and is specularly reflected otherwise;
 // with eta = 1 (index-matched) it always leaves. Every path counts 0 or 1, so the total
 // reflectance is a binomial proportion and each annulus of R(r) a multinomial one: their
-// standard errors are exact.
+// standard errors are exact. Paths that leave after exactly one scattering event are also
+// tallied on their own (single scattering), so that a profile of multiple scattering only
+// (the dipoles') can be compared with the rest.
 //
 // Path i draws from CounterRng(seed, i) and the tallies are integers, so the result is the
 // same for any number of threads. This file holds one path and the tally; the parallel driver
@@ -56,6 +58,14 @@ struct HalfSpaceWalkResult {
   std::vector<uint64_t> counts;  // escaped paths per annulus
   std::vector<double> profile;   // R per annulus, mm^-2: counts / (paths * annulus area)
   std::vector<double> profileStdError;
+  // The part of the above that scattered exactly once.
+  uint64_t singleEscaped = 0;
+  double singleReflectance = 0.0, singleStdError = 0.0;
+  std::vector<uint64_t> singleCounts;
+
+  // R per annulus of the paths that scattered at least twice: (counts - singleCounts) /
+  // (paths * annulus area).
+  std::vector<double> multipleScatteringProfile() const;
 };
 
 // One path's outcome (exposed for tests and benchmarks).
@@ -69,10 +79,11 @@ WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& settings, CounterRng& r
 
 // Integer counts of a set of paths: merged in any order, they give the same result.
 struct HalfSpaceTally {
-  std::vector<uint64_t> counts;  // escaped paths per annulus of the settings' radius edges
-  uint64_t escaped = 0, absorbed = 0, truncated = 0, scatteringEvents = 0;
+  std::vector<uint64_t> counts;        // escaped paths per annulus of the settings' radius edges
+  std::vector<uint64_t> singleCounts;  // those of them that scattered exactly once
+  uint64_t escaped = 0, absorbed = 0, truncated = 0, scatteringEvents = 0, singleEscaped = 0;
 
-  explicit HalfSpaceTally(size_t annuli = 0) : counts(annuli, 0) {}
+  explicit HalfSpaceTally(size_t annuli = 0) : counts(annuli, 0), singleCounts(annuli, 0) {}
   void add(const WalkPath& path, const std::vector<double>& radiusEdges);
   void merge(const HalfSpaceTally& other);
 };
@@ -86,5 +97,7 @@ HalfSpaceWalkResult halfSpaceWalkResult(const HalfSpaceWalkSettings& settings, c
 
 // n + 1 edges: 0, then n log-spaced edges from `first` to `last` (mm).
 std::vector<double> logRadiusEdges(double first, double last, int n);
+// n + 1 edges: 0, last / n, 2 last / n, ..., last (mm).
+std::vector<double> linearRadiusEdges(double last, int n);
 
 }  // namespace scatterlab

@@ -20,7 +20,7 @@ TEST(ProfileCli, HelpListsEveryOption) {
   const ProcessResult run = runScatterlab({"profile", "--help"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   for (const char* option : {"--reference", "--albedo", "--eta", "--g", "--paths", "--min-radius", "--max-radius",
-                             "--bins", "--seed", "--threads", "--json"})
+                             "--bins", "--seed", "--threads", "--compare", "--json"})
     EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
@@ -60,6 +60,74 @@ TEST(ProfileCli, TextOutputNamesTheColumns) {
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   for (const char* text : {"total diffuse reflectance", "random walk", "R_r profile", "R_b walk", "+- se"})
     EXPECT_NE(run.out.find(text), std::string::npos) << text << " missing from:\n" << run.out;
+}
+
+TEST(ProfileCli, CompareTablesEveryModelAgainstTheWalk) {
+  const ProcessResult run = runScatterlab({"profile", R"({"type": "subsurface", "medium": "Skin1"})", "--reference",
+                                           "walk", "--compare", "--paths", "20000", "--json"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json out = json::parse(run.out);
+  std::set<std::string> models;
+  for (const json& m : out["models"]) {
+    models.insert(m["model"].get<std::string>());
+    for (const char* key : {"total_reflectance", "total_error", "profile_error", "multiple_total_error",
+                            "multiple_profile_error"})
+      EXPECT_EQ(m[key].size(), 3u) << key;
+    for (const json& e : m["profile_error"]) EXPECT_GE(e.get<double>(), 0.0);
+  }
+  EXPECT_EQ(models, (std::set<std::string>{"dipole", "better-dipole", "beam-diffusion", "burley"}));
+  const json& walk = out["walk"];
+  EXPECT_EQ(walk["channels"].size(), 3u);
+  for (int c = 0; c < 3; ++c)  // all orders = single + multiple scattering
+    EXPECT_NEAR(walk["total"][size_t(c)].get<double>(),
+                walk["channels"][size_t(c)]["single_scattering"].get<double>() + walk["multiple_total"][size_t(c)].get<double>(),
+                1e-12);
+  EXPECT_EQ(out["radius_edges"].size(), 25u);
+  // The dipole's total is Jensen's closed form; its error is relative to the walk's total.
+  const json& dipole = out["models"][0];
+  EXPECT_EQ(dipole["model"], "dipole");
+  EXPECT_NEAR(dipole["total_error"][0].get<double>(),
+              dipole["total_reflectance"][0].get<double>() / walk["total"][0].get<double>() - 1.0, 1e-12);
+  const ProcessResult text = runScatterlab({"profile", R"({"type": "subsurface", "medium": "Skin1"})", "--reference",
+                                            "walk", "--compare", "--paths", "5000"});
+  ASSERT_EQ(text.exitCode, 0) << describe(text);
+  for (const char* fragment : {"multiple only", "single scattering", "noise floor", "beam-diffusion", "R(r)"})
+    EXPECT_NE(text.out.find(fragment), std::string::npos) << fragment << " missing from:\n" << text.out;
+}
+
+TEST(ShapeFactorCli, FitsAndComparesWithThePublishedFit) {
+  const ProcessResult run =
+      runScatterlab({"shape-factor", "--albedos", "0.3,0.6", "--paths", "30000", "--threads", "1", "--json"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json out = json::parse(run.out);
+  ASSERT_EQ(out["rows"].size(), 2u);
+  for (const json& row : out["rows"]) {
+    const double a = row["albedo"].get<double>();
+    EXPECT_NEAR(row["published_shape_factor"].get<double>(), 1.85 - a + 7 * std::pow(std::abs(a - 0.8), 3), 1e-12);
+    // 30000 paths: the walk's noise in s is ~2%; the fit lands within 10% of the published s.
+    EXPECT_NEAR(row["shape_factor"].get<double>() / row["published_shape_factor"].get<double>(), 1.0, 0.1);
+    EXPECT_EQ(row["termination"], "CONVERGENCE");
+  }
+  EXPECT_NE(out["metric"].get<std::string>().find("r R(r)"), std::string::npos);
+  // The same seed gives the same table for any thread count.
+  const ProcessResult two =
+      runScatterlab({"shape-factor", "--albedos", "0.3,0.6", "--paths", "30000", "--threads", "2", "--json"});
+  EXPECT_EQ(json::parse(two.out)["rows"], out["rows"]);
+  const ProcessResult text = runScatterlab({"shape-factor", "--albedos", "0.5", "--paths", "5000"});
+  ASSERT_EQ(text.exitCode, 0) << describe(text);
+  for (const char* fragment : {"fitted s", "published s", "least squares of r R(r)", "mean |difference|"})
+    EXPECT_NE(text.out.find(fragment), std::string::npos) << fragment << " missing from:\n" << text.out;
+}
+
+TEST(ShapeFactorCli, BadInputExitsTwo) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"shape-factor", "--albedos", "1"}, {"shape-factor", "--albedos", "0.5,abc"},
+        {"shape-factor", "--paths", "10"}, {"shape-factor", "--annulus-width", "0"}}) {
+    const ProcessResult run = runScatterlab(args);
+    EXPECT_EQ(run.exitCode, 2) << describe(run);
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_NE(run.err.find(args[1]), std::string::npos) << run.err;
+  }
 }
 
 struct BadProfileRun {
@@ -105,6 +173,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadProfileRun{"unknown reference", {R"({"type": "subsurface"})", "--reference", "monte-carlo"}, {"--reference"}},
         BadProfileRun{"radii the wrong way round", {R"({"type": "subsurface"})", "--min-radius", "5", "--max-radius", "1"},
                       {"--min-radius", "--max-radius"}},
+        BadProfileRun{"compare without the walk", {R"({"type": "subsurface"})", "--compare"},
+                      {"--compare", "--reference walk"}},
+        BadProfileRun{"compare with the walk's own albedo",
+                      {R"({"type": "subsurface"})", "--reference", "walk", "--compare", "--albedo", "0.5"},
+                      {"--albedo", "share the material's medium"}},
+        BadProfileRun{"compare with a radius grid",
+                      {R"({"type": "subsurface"})", "--reference", "walk", "--compare", "--max-radius", "5"},
+                      {"--max-radius", "--bins"}},
         BadProfileRun{"missing file", {"no-such-material.json"}, {"no-such-material.json", "not found"}},
         BadProfileRun{"no material", {}, {"material"}}));
 

@@ -63,7 +63,7 @@ TEST(RenderCli, HelpListsEveryOption) {
   const ProcessResult run = runScatterlab({"render", "--help"});
   EXPECT_EQ(run.exitCode, 0) << describe(run);
   expectMentions(run.out, {"--scene", "--env", "--env-strength", "--env-rotate", "--spp", "--res", "--threads", "--seed",
-                           "--max-depth", "--estimator", "--filter", "--exposure", "--layers", "--label", "--columns",
+                           "--max-depth", "--estimator", "--subsurface", "--filter", "--exposure", "--layers", "--label", "--columns",
                            "--out", "--json"});
 }
 
@@ -127,6 +127,32 @@ TEST(RenderCli, SameImageForOneAndTwoThreads) {
   EXPECT_EQ(readBytes(one.string() + ".png"), readBytes(two.string() + ".png"));
 }
 
+// The gallery of Jensen et al. 2001's measured media (Marble on a sphere of 1 cm, "scale": 10;
+// Skin1 behind a rough boundary, Ketchup and Wholemilk at 1 mm), both ways: the diffusion
+// profile and the volumetric random walk. Every sphere renders finite and lit.
+TEST(RenderCli, SubsurfaceGalleryInBothModes) {
+  for (const char* mode : {"diffusion", "walk"}) {
+    const fs::path prefix = uniquePath(std::string("subsurface-") + mode);
+    const ProcessResult run = runScatterlab(
+        {"render", R"({"type":"subsurface","medium":"Marble","scale":10})",
+         R"({"type":"subsurface","medium":"Skin1","profile":"beam-diffusion","boundary":"rough","roughness":0.2})",
+         R"({"type":"subsurface","medium":"Ketchup","profile":"dipole"})",
+         R"({"type":"subsurface","medium":"Wholemilk","profile":"better-dipole"})", "--res", "16", "--spp", "2",
+         "--subsurface", mode, "--out", prefix.string(), "--json"});
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    const json out = json::parse(run.out);
+    EXPECT_EQ(out["subsurface"], mode);
+    ASSERT_EQ(out["renders"].size(), 4u);
+    for (const json& r : out["renders"]) {
+      EXPECT_EQ(r["non_finite_samples"], 0) << r.dump();
+      EXPECT_GT(r["sphere"]["n"].get<int>(), 0) << r.dump();
+      EXPECT_GT(r["sphere"]["mean"].get<double>(), 0.0) << r.dump();
+      EXPECT_EQ(r["material"]["type"], "subsurface");
+    }
+    EXPECT_TRUE(fs::exists(prefix.string() + ".png"));
+  }
+}
+
 // ---- Bad input ------------------------------------------------------------------------------
 
 class RenderCliBadInput : public testing::Test {
@@ -149,6 +175,7 @@ TEST_F(RenderCliBadInput, SamplesAndSettings) {
   expectBadInput(with({"--spp", "-3"}), {"--spp"}, prefix);
   expectBadInput(with({"--scene", "cornell"}), {"--scene", "\"cornell\"", "\"sphere\", \"preview\""}, prefix);
   expectBadInput(with({"--estimator", "guess"}), {"--estimator", "\"mis\", \"bsdf\", \"light\""}, prefix);
+  expectBadInput(with({"--subsurface", "photon"}), {"--subsurface", "\"diffusion\", \"walk\""}, prefix);
   expectBadInput(with({"--layers", "depth"}), {"--layers", "\"depth\"", "\"albedo\", \"normal\", \"variance\""}, prefix);
   expectBadInput(with({"--env-strength", "nan"}), {"--env-strength", "\"nan\""}, prefix);
 }
@@ -156,8 +183,11 @@ TEST_F(RenderCliBadInput, SamplesAndSettings) {
 TEST_F(RenderCliBadInput, Materials) {
   expectBadInput({"render", R"({"type":"lambertian","albedo":2})", "--out", prefix.string()}, {"albedo"}, prefix);
   expectBadInput({"render", "no-such-material.json", "--out", prefix.string()}, {"no-such-material.json"}, prefix);
-  // A BSSRDF: the renderer takes BSDFs only (so far).
-  expectBadInput({"render", R"({"type":"subsurface"})", "--out", prefix.string()}, {"subsurface", "BSDF"}, prefix);
+  // A subsurface material's rough boundary is a rough dielectric: eta 1 has no microfacet refraction.
+  expectBadInput({"render", R"({"type":"subsurface","eta":1,"boundary":"rough"})", "--out", prefix.string()},
+                 {"boundary", "[1.02, 4]"}, prefix);
+  expectBadInput({"render", R"({"type":"subsurface","sigma_s":[1,1,1],"sigma_a":[-1,0,0]})", "--out", prefix.string()},
+                 {"sigma_a"}, prefix);
   expectBadInput({"render", WhiteLambertian, WhiteLambertian, "--label", "one", "--out", prefix.string()},
                  {"--label", "1 labels for 2 materials"}, prefix);
   expectBadInput({"render", WhiteLambertian, WhiteLambertian, "--layers", "albedo", "--out", prefix.string()},

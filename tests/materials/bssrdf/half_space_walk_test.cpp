@@ -55,6 +55,8 @@ TEST(HalfSpaceWalk, SameResultForAnyThreadCount) {
   EXPECT_EQ(one.escaped, two.escaped);
   EXPECT_EQ(one.scatteringEvents, two.scatteringEvents);
   EXPECT_EQ(one.counts, two.counts);
+  EXPECT_EQ(one.singleCounts, two.singleCounts);
+  EXPECT_EQ(one.singleEscaped, two.singleEscaped);
 }
 
 TEST(HalfSpaceWalk, NothingIsLostWithoutAbsorptionBehindAFresnelBoundary) {
@@ -91,6 +93,33 @@ TEST(HalfSpaceWalk, ProfileAnnuliAddUpToTheEscapedFraction) {
   }
   EXPECT_EQ(inAnnuli, walk.escaped);
   EXPECT_NEAR(integral, walk.totalReflectance, 1e-12);
+}
+
+// Single scattering of a normally incident beam, index-matched and isotropic, in closed form:
+// the first collision at optical depth z (density e^-z), scattered with probability c into a
+// uniformly distributed direction, leaves upward along mu with probability e^(-z / mu):
+// R1 = c int_0^inf e^-z dz int_0^1 (1/2) e^(-z/mu) dmu = (c / 2) int_0^1 mu / (1 + mu) dmu
+//    = (c / 2)(1 - ln 2).
+TEST(HalfSpaceWalk, SingleScatteringMatchesItsClosedForm) {
+  for (const double c : {0.3, 0.9}) {
+    SCOPED_TRACE(c);
+    HalfSpaceWalkSettings s = settings(c, 200000, 18);
+    s.radiusEdges = logRadiusEdges(1e-2, 30.0, 8);
+    const HalfSpaceWalkResult walk = simulateHalfSpace(s);
+    const double exact = 0.5 * c * (1.0 - std::log(2.0));
+    EXPECT_LE(std::abs(walk.singleReflectance - exact), 3.0 * walk.singleStdError)
+        << "walk " << walk.singleReflectance << " +- " << walk.singleStdError << ", exact " << exact;
+    // The annuli split the single-scattering paths too, and the rest is multiple scattering.
+    uint64_t single = 0;
+    const std::vector<double> multiple = walk.multipleScatteringProfile();
+    for (size_t k = 0; k < walk.counts.size(); ++k) {
+      single += walk.singleCounts[k];
+      EXPECT_LE(walk.singleCounts[k], walk.counts[k]);
+      const double area = Pi * (sqr(s.radiusEdges[k + 1]) - sqr(s.radiusEdges[k]));
+      EXPECT_NEAR(multiple[k] * area * double(s.paths), double(walk.counts[k] - walk.singleCounts[k]), 1e-6);
+    }
+    EXPECT_LE(single, walk.singleEscaped);
+  }
 }
 
 TEST(HalfSpaceWalk, RejectsSettingsOutOfRange) {

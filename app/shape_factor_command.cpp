@@ -1,0 +1,117 @@
+#include "app/shape_factor_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_code.h"
+#include "app/option_values.h"
+#include "app/progress.h"
+#include "fitting/burley_shape_fit.h"
+#include "materials/core/rng.h"
+#include "validation/half_space_reference.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* Metric =
+    "least squares of r R(r) over radius (annulus averages; Burley's exact from its CDF)";
+
+void printTable(const ShapeFactorCommandOptions& options, const std::vector<fitting::BurleyShapeFit>& fits) {
+  std::printf("Burley's searchlight shape factor fitted to the half-space random walk: normal incidence, mean free\n"
+              "path 1, g 0, index-matched, %llu paths per albedo; metric: %s, annuli of %g mfp.\n"
+              "Errors: r-weighted relative error of R(r) against the walk (L1 of the radial power over %d log-spaced\n"
+              "annuli, relative to the walk's total); noise: what the walk's noise alone adds to them.\n\n",
+              static_cast<unsigned long long>(options.paths), Metric, options.annulusWidth, fitting::ErrorAnnuli);
+  std::printf("A      walk albedo c   walk total         fitted s           published s  difference  "
+              "fit error  published error  noise\n");
+  double sumDifference = 0.0, sumError = 0.0, sumPublished = 0.0;
+  for (const fitting::BurleyShapeFit& f : fits) {
+    const double difference = f.shapeFactor / f.publishedShapeFactor - 1.0;
+    sumDifference += std::abs(difference);
+    sumError += f.fitError;
+    sumPublished += f.publishedError;
+    std::printf("%-6.3g %-15.10f %.5f +- %.5f  %.4f +- %.4f   %-12.4f %+9.1f%%  %8.1f%%  %15.1f%%  %4.1f%%\n", f.albedo,
+                f.walkAlbedo, f.walkReflectance, f.walkStdError, f.shapeFactor, f.shapeStdError, f.publishedShapeFactor,
+                100.0 * difference, 100.0 * f.fitError, 100.0 * f.publishedError, 100.0 * f.errorNoiseFloor);
+  }
+  const double n = double(fits.size());
+  std::printf("\nmean |difference| %.1f%%; mean error: fitted %.1f%%, published %.1f%%\n", 100.0 * sumDifference / n,
+              100.0 * sumError / n, 100.0 * sumPublished / n);
+}
+
+json tableJson(const ShapeFactorCommandOptions& options, const std::vector<fitting::BurleyShapeFit>& fits) {
+  json rows = json::array();
+  for (const fitting::BurleyShapeFit& f : fits)
+    rows.push_back({{"albedo", f.albedo},
+                    {"walk_albedo", f.walkAlbedo},
+                    {"walk_total_reflectance", f.walkReflectance},
+                    {"walk_std_error", f.walkStdError},
+                    {"shape_factor", f.shapeFactor},
+                    {"shape_factor_std_error", f.shapeStdError},
+                    {"published_shape_factor", f.publishedShapeFactor},
+                    {"difference", f.shapeFactor / f.publishedShapeFactor - 1.0},
+                    {"fit_error", f.fitError},
+                    {"published_error", f.publishedError},
+                    {"error_noise_floor", f.errorNoiseFloor},
+                    {"termination", f.fit.termination}});
+  return {{"configuration", "searchlight: normal incidence, mean free path 1, g 0, index-matched"},
+          {"metric", Metric},
+          {"annulus_width", options.annulusWidth},
+          {"paths", options.paths},
+          {"seed", options.seed},
+          {"published", "s = 1.85 - A + 7 |A - 0.8|^3 (Christensen & Burley 2015)"},
+          {"errors", "r-weighted relative error of R(r) against the walk"},
+          {"rows", std::move(rows)}};
+}
+
+}  // namespace
+
+CLI::App* addShapeFactorCommand(CLI::App& app, ShapeFactorCommandOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "shape-factor", "Fit Burley's searchlight shape factor s(A) to half-space random walks over albedos A and print "
+                      "it next to Christensen & Burley's published fit");
+  command->add_option("--albedos", options.albedos, "Total reflectances A to fit at, each in (0, 1)")
+      ->delimiter(',')
+      ->type_name("LIST")
+      ->check(numberIn(ValueRange{0.0, 1.0, true, true}, "a total reflectance"))
+      ->capture_default_str();
+  command->add_option("--paths", options.paths, "Walk paths per albedo")
+      ->type_name("INTEGER")
+      ->transform(integerIn(1000, 10'000'000'000))
+      ->capture_default_str();
+  command->add_option("--annulus-width", options.annulusWidth, "Width of the walk's annuli, in mean free paths")
+      ->type_name("MFP")
+      ->check(numberIn(ValueRange::closed(1e-4, 1.0), "a width in mean free paths"))
+      ->capture_default_str();
+  addSeedAndThreadOptions(command, options.seed, options.threads, "walks");
+  command->add_flag("--json", options.json, "Print one JSON document");
+  return command;
+}
+
+int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
+  if (options.albedos.empty()) throw InputError("--albedos: no albedo given; allowed: a list of values in (0, 1)");
+  std::vector<fitting::BurleyShapeFit> fits;
+  ProgressLine progress;
+  for (size_t i = 0; i < options.albedos.size(); ++i) {
+    const double albedo = options.albedos[i];
+    HalfSpaceWalkSettings settings =
+        fitting::burleyShapeWalkSettings(albedo, options.paths, deriveSeed(options.seed, i), options.annulusWidth);
+    settings.threads = options.threads;
+    const HalfSpaceWalkResult walk = simulateHalfSpace(settings, progress.walkCallback("walk at A " + std::to_string(albedo)));
+    fits.push_back(fitting::fitBurleyShapeFactor(walk, albedo));
+  }
+  progress.clear();
+  if (options.json)
+    std::cout << tableJson(options, fits).dump(2) << "\n";
+  else
+    printTable(options, fits);
+  return static_cast<int>(ExitCode::Success);
+}
+
+}  // namespace scatterlab
