@@ -4,9 +4,9 @@
 // Callers that hold a material description and want its picture (the lab report's renders)
 // ask here instead of looking at the material's type, so that a kind of material the renderer
 // learns to render appears everywhere at once. What it renders: every BSDF of the registry,
-// and subsurface materials (in the diffusion mode of integrator/subsurface.h) where that part
-// of the renderer is built in; without it a subsurface material is refused with the
-// registry's message ("... is a subsurface material (a BSSRDF), not a BSDF ...").
+// and subsurface materials in the diffusion mode of integrator/subsurface.h (the BSSRDF
+// itself, the model the lab's checks are about), except those whose boundary the renderer
+// cannot take (a rough boundary needs eta in [1.02, 4]), which are refused with its message.
 #pragma once
 
 #include <nlohmann/json.hpp>

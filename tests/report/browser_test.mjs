@@ -5,9 +5,10 @@
 // and that the page logged no console error and no request failed. Saves a
 // full-page screenshot beside the report (DIR/../report-screenshot.png, or SCREENSHOT).
 //
-// Usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N]
+// Usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N] [--expect-unrendered N]
 // --expect-failed N: exactly N materials must be marked FAIL (default 0), each with its failing
-// rows listed. Exit 0 when every check passes; otherwise prints each failure and exits 1.
+// rows listed. --expect-unrendered N: exactly N materials have no renders, each showing the
+// renderer's message instead (default 0). Exit 0 when every check passes; otherwise prints each failure and exits 1.
 import { createRequire } from 'node:module';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -19,12 +20,15 @@ const require = createRequire(path.join(here, '..', '..', 'package.json'));
 const { chromium } = require('playwright-core');
 
 const args = process.argv.slice(2);
-let expectedFailed = 0;
-const expectAt = args.indexOf('--expect-failed');
-if (expectAt >= 0) expectedFailed = Number(args.splice(expectAt, 2)[1]);
+const takeCount = (flag) => {
+  const at = args.indexOf(flag);
+  return at >= 0 ? Number(args.splice(at, 2)[1]) : 0;
+};
+const expectedFailed = takeCount('--expect-failed');
+const expectedUnrendered = takeCount('--expect-unrendered');
 const [reportDir, screenshotArg] = args;
-if (!reportDir || !Number.isInteger(expectedFailed)) {
-  console.error('usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N]');
+if (!reportDir || !Number.isInteger(expectedFailed) || !Number.isInteger(expectedUnrendered)) {
+  console.error('usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N] [--expect-unrendered N]');
   process.exit(2);
 }
 const index = path.resolve(reportDir, 'index.html');
@@ -118,6 +122,9 @@ try {
     for (const refusal of r.refusals)
       if (!refusal.text || !refusal.visible) fail('material ' + r.id + ': a refused render without a visible message');
   }
+  const unrendered = renders.filter((r) => r.section && r.images === 0).length;
+  if (unrendered !== expectedUnrendered)
+    fail('expected ' + expectedUnrendered + ' materials without renders, the page has ' + unrendered);
 
   await page.screenshot({ path: screenshot, fullPage: true });
   console.log(JSON.stringify({ index, screenshot, images: images.length, charts: charts.length, verdicts, renders,
