@@ -109,8 +109,8 @@ TEST(LabCli, AnUnreadableEnvironmentMapIsBadInputAndTheLastReportStays) {
 }
 
 // The report renders what the renderer accepts and shows the renderer's message for what it
-// refuses; which of the two a subsurface material is, the integrator says (today it refuses
-// BSSRDFs; once it renders them, this test expects their pictures).
+// refuses; which of the two a subsurface material is, the integrator says (it renders BSSRDFs
+// in diffusion mode; were it to refuse this one, the report must show its message instead).
 TEST(LabCli, EveryMaterialGoesToTheRenderer) {
   const json subsurface{{"type", "subsurface"}};  // the default medium: a short random walk
   std::string refusal;
