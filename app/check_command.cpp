@@ -43,11 +43,6 @@ struct MaterialUnderTest {
   std::unique_ptr<BsdfModel> roughnessMismatchSampler;
 };
 
-std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const json& material) {
-  const auto mismatched = withMismatchedRoughness(material, RoughnessMismatchFactor);
-  return mismatched ? makeBsdf(*mismatched) : nullptr;
-}
-
 MaterialUnderTest prepareMaterial(std::string label, const json& material, bool negativeControls) {
   if (isSubsurfaceMaterial(material))
     return {std::move(label), completeMaterial(material), nullptr, makeSubsurface(material), nullptr};
@@ -98,30 +93,14 @@ void createImageDirectory(const std::filesystem::path& directory) {
                      "); allowed: a directory, or a path where one can be created");
 }
 
-// The subsurface kit on the same options: --grid R x C gives R radius bins and R/2 x C/4 probe
-// cells (64 and 32 x 32 by default).
-SubsurfaceCheckOptions subsurfaceOptions(const BsdfCheckOptions& kit) {
-  SubsurfaceCheckOptions options;
-  options.samples = kit.samples;
-  options.radiusBins = kit.thetaBins;
-  options.probeRings = std::max(kit.thetaBins / 2, 2);
-  options.probeSectors = std::max(kit.phiBins / 4, 2);
-  options.seed = kit.seed;
-  options.alpha = kit.alpha;
-  options.chiSquareTestCount = kit.chiSquareTestCount;
-  options.imageDir = kit.imageDir;
-  options.imagesOnFailureOnly = kit.imagesOnFailureOnly;
-  return options;
-}
-
 CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOptions& kit, bool negativeControls,
                           const ProgressCallback& progress) {
   if (material.subsurface) {
     CheckReport report =
-        runSubsurfaceChecks(material.subsurface->bssrdf(), material.label, subsurfaceOptions(kit), progress);
+        runSubsurfaceChecks(material.subsurface->bssrdf(), material.label, subsurfaceCheckOptions(kit), progress);
     if (negativeControls)
       report.append(
-          runSubsurfaceNegativeControls(*material.subsurface->profile, material.label, subsurfaceOptions(kit), progress));
+          runSubsurfaceNegativeControls(*material.subsurface->profile, material.label, subsurfaceCheckOptions(kit), progress));
     return report;
   }
   CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
@@ -177,6 +156,25 @@ void printText(const std::vector<MaterialUnderTest>& materials, const CheckRepor
 }
 
 }  // namespace
+
+std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const json& material) {
+  const auto mismatched = withMismatchedRoughness(material, RoughnessMismatchFactor);
+  return mismatched ? makeBsdf(*mismatched) : nullptr;
+}
+
+SubsurfaceCheckOptions subsurfaceCheckOptions(const BsdfCheckOptions& kit) {
+  SubsurfaceCheckOptions options;
+  options.samples = kit.samples;
+  options.radiusBins = kit.thetaBins;
+  options.probeRings = std::max(kit.thetaBins / 2, 2);
+  options.probeSectors = std::max(kit.phiBins / 4, 2);
+  options.seed = kit.seed;
+  options.alpha = kit.alpha;
+  options.chiSquareTestCount = kit.chiSquareTestCount;
+  options.imageDir = kit.imageDir;
+  options.imagesOnFailureOnly = kit.imagesOnFailureOnly;
+  return options;
+}
 
 CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
   CLI::App* command = app.add_subcommand(

@@ -3,12 +3,17 @@
 // the verdict table, or one JSON document with --json.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include <CLI/CLI.hpp>
 
+#include "materials/bsdf/bsdf.h"
 #include "validation/bsdf_check.h"
+#include "validation/subsurface_check.h"
 
 namespace scatterlab {
 
@@ -26,5 +31,13 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options);
 // Returns the exit code: 0 when every row passes, 1 otherwise. Bad input throws
 // MaterialError or InputError.
 int runCheckCommand(const CheckCommandOptions& options);
+
+// The subsurface kit on the BSDF kit's options: --grid R x C gives R radius bins and R/2 x C/4
+// probe cells (64 and 32 x 32 by default). Shared with the lab report.
+SubsurfaceCheckOptions subsurfaceCheckOptions(const BsdfCheckOptions& kit);
+
+// The sampler of the roughness-mismatch negative control (VALIDATION.md: a lobe width 10% off
+// the one pdf() uses), or null for a model without a lobe-width parameter.
+std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const nlohmann::json& material);
 
 }  // namespace scatterlab

@@ -8,6 +8,7 @@
 #include "app/exit_code.h"
 #include "app/fit_command.h"
 #include "app/generate_table_command.h"
+#include "app/lab/lab_command.h"
 #include "app/models_command.h"
 #include "app/profile_command.h"
 #include "app/shape_factor_command.h"
@@ -56,6 +57,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* shapeFactor = addShapeFactorCommand(app, shapeFactorOptions);
   RenderCommandOptions renderOptions;
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
+  LabCommandOptions labOptions;
+  const CLI::App* lab = addLabCommand(app, labOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -71,6 +74,7 @@ int runCli(int argc, char** argv) {
     if (*fit) return runFitCommand(fitOptions);
     if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
     if (*renderCommand) return runRenderCommand(renderOptions);
+    if (*lab) return runLabCommand(labOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);

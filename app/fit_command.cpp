@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/fit_verdict.h"
 #include "app/option_values.h"
 #include "app/progress.h"
 #include "app/synth_command.h"
@@ -94,35 +95,13 @@ FitOptions fitOptionsOf(const FitCommandOptions& options) {
   return fit;
 }
 
-struct Verdict {
-  bool good = true;
-  std::vector<std::string> problems;
-};
-
-Verdict judge(const FitResult& result, const WrittenMaterial& written, double maxRelativeError) {
-  Verdict verdict;
-  const auto fail = [&](std::string problem) {
-    verdict.good = false;
-    verdict.problems.push_back(std::move(problem));
-  };
-  if (!result.final.converged)
-    fail("did not converge: " + result.final.termination + " after " + std::to_string(result.final.iterations) +
-         " iterations (" + result.final.message + ")");
-  for (int c = 0; c < 3; ++c)
-    if (!(result.relativeError[c] <= maxRelativeError))
-      fail(std::string("relative error of channel ") + "rgb"[c] + " " + format("%.3g", result.relativeError[c]) +
-           " exceeds --max-relative-error " + format("%g", maxRelativeError));
-  if (!written.material) fail("no registry material: " + written.problem);
-  return verdict;
-}
-
 std::string rangeText(const ParameterEstimate& e) {
   const auto bound = [](double x) { return std::abs(x) >= 1e300 ? std::string("inf") : format("%g", x); };
   return "[" + bound(e.lower) + ", " + bound(e.upper) + "]";
 }
 
 void printReport(const FitCommandOptions& options, const LoadedData& data, const FitResult& result,
-                 const WrittenMaterial& written, const Verdict& verdict, const std::string& writtenPath) {
+                 const WrittenMaterial& written, const FitVerdict& verdict, const std::string& writtenPath) {
   std::printf("fit: %s to %s\n", options.model.c_str(), data.label.c_str());
   std::printf("data: %zu usable cells (%zu missing, %zu below the horizon); fitted on %s\n", data.counts.usable,
               data.counts.missing, data.counts.unreachable,
@@ -256,7 +235,7 @@ int runFitCommand(const FitCommandOptions& options) {
   progress.clear();
 
   const WrittenMaterial written = writeMaterial(model->fittedParts(result.x.data()));
-  const Verdict verdict = judge(result, written, options.maxRelativeError);
+  const FitVerdict verdict = judgeFit(result, written, options.maxRelativeError);
   std::string writtenPath;
   if (verdict.good && !options.out.empty()) {
     writeTextFileAtomically(options.out, written.material->dump(2) + "\n");

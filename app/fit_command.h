@@ -30,7 +30,7 @@ struct FitCommandOptions {
   int starts = 3;
   int gridPoints = 256;
   int maxIterations = 100;
-  double maxRelativeError = 0.7;  // 0.7^2 ~ 1/2: the fit leaves half of the data's metric energy unexplained
+  double maxRelativeError = 0.7;  // fit_verdict.h DefaultMaxRelativeError
   int threads = 0;
   std::string out;
   bool json = false;

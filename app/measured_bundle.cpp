@@ -33,16 +33,21 @@ std::span<const BundleMaterial> measuredBundle() {
   return bundle;
 }
 
-std::optional<std::filesystem::path> defaultBundleDirectory() {
+std::optional<std::filesystem::path> defaultCacheDirectory() {
   const auto environment = [](const char* name) -> std::optional<std::filesystem::path> {
     const char* value = std::getenv(name);
     if (!value || !*value) return std::nullopt;
     return std::filesystem::path(value);
   };
-  if (const auto dir = environment("SCATTERLAB_CACHE_DIR")) return *dir / "merl-bundle";
-  if (const auto dir = environment("XDG_CACHE_HOME")) return *dir / "scatterlab" / "merl-bundle";
-  if (const auto dir = environment("HOME")) return *dir / ".cache" / "scatterlab" / "merl-bundle";
+  if (const auto dir = environment("SCATTERLAB_CACHE_DIR")) return *dir;
+  if (const auto dir = environment("XDG_CACHE_HOME")) return *dir / "scatterlab";
+  if (const auto dir = environment("HOME")) return *dir / ".cache" / "scatterlab";
   return std::nullopt;
+}
+
+std::optional<std::filesystem::path> defaultBundleDirectory() {
+  const auto cache = defaultCacheDirectory();
+  return cache ? std::optional(*cache / "merl-bundle") : std::nullopt;
 }
 
 }  // namespace scatterlab

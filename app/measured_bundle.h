@@ -22,9 +22,11 @@ inline constexpr const char* BundleFitFile = "ngan_cooktorrance.fit";
 
 std::span<const BundleMaterial> measuredBundle();
 
-// Where the bundle goes without --bundle DIR: $SCATTERLAB_CACHE_DIR/merl-bundle, else
-// $XDG_CACHE_HOME/scatterlab/merl-bundle, else $HOME/.cache/scatterlab/merl-bundle; nothing
-// when none of these is set.
+// scatterlab's cache directory: $SCATTERLAB_CACHE_DIR, else $XDG_CACHE_HOME/scatterlab, else
+// $HOME/.cache/scatterlab; nothing when none of these is set.
+std::optional<std::filesystem::path> defaultCacheDirectory();
+
+// Where the bundle goes without --bundle DIR: merl-bundle in the cache directory.
 std::optional<std::filesystem::path> defaultBundleDirectory();
 
 }  // namespace scatterlab

@@ -8,6 +8,7 @@
 
 #include "app/exit_code.h"
 #include "app/option_values.h"
+#include "app/profile_annuli.h"
 #include "app/progress.h"
 #include "materials/bssrdf/annulus_profile.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
@@ -44,11 +45,7 @@ LoadedMaterial loadSubsurface(const std::string& argument) {
 // Annuli from 0: [0, min], then log-spaced to max. By default max is where every reflecting
 // channel holds 99.9% of its profile, and min a thousandth of it.
 std::vector<double> radiusEdges(const ProfileCommandOptions& options, const RadialProfile& profile) {
-  double largest = 0.0;
-  for (int c = 0; c < 3; ++c)
-    if (profile.totalReflectance()[c] > 0) largest = std::max(largest, profile.sampleRadius(c, 0.999));
-  if (!(largest > 0)) largest = 1.0;
-  const double maxRadius = options.maxRadius.value_or(largest);
+  const double maxRadius = options.maxRadius.value_or(profileExtent(profile));
   const double minRadius = options.minRadius.value_or(1e-3 * maxRadius);
   if (!(minRadius < maxRadius))
     throw InputError("--min-radius: " + std::to_string(minRadius) + " mm is not below the largest radius " +
@@ -63,15 +60,10 @@ struct ChannelWalk {
 
 HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const ScatteringMedium& medium, int channel,
                                    const std::vector<double>& edges) {
-  HalfSpaceWalkSettings s;
-  s.albedo = options.albedo.empty() ? medium.albedo()[channel] : options.albedo[options.albedo.size() == 3 ? channel : 0];
-  s.extinction = medium.extinction()[channel];
-  s.g = options.g.value_or(medium.g);
-  s.eta = options.eta.value_or(medium.eta);
-  s.radiusEdges = edges;
-  s.paths = options.paths;
-  s.seed = deriveSeed(options.seed, uint64_t(channel));
-  s.threads = options.threads;
+  HalfSpaceWalkSettings s = mediumWalkSettings(medium, channel, edges, options.paths, options.seed, options.threads);
+  if (!options.albedo.empty()) s.albedo = options.albedo[options.albedo.size() == 3 ? channel : 0];
+  s.g = options.g.value_or(s.g);
+  s.eta = options.eta.value_or(s.eta);
   return s;
 }
 

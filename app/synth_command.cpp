@@ -17,6 +17,7 @@
 #include "app/measured_bundle.h"
 #include "app/option_values.h"
 #include "app/progress.h"
+#include "app/table_cache.h"
 #include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
 #include "materials/measured/merl_io.h"
@@ -28,9 +29,6 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-constexpr const char* ManifestName = "bundle.json";
-constexpr int ManifestFormat = 1;
 
 std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
@@ -137,14 +135,6 @@ void printWritten(const json& entry, const std::string& label) {
             << entry["missing_cells"].get<size_t>() << " missing cells, " << entry["seconds"].get<double>() << " s\n";
 }
 
-json readManifest(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) return json::object();
-  const json manifest = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!manifest.is_object() || manifest.value("format", 0) != ManifestFormat) return json::object();
-  return manifest;
-}
-
 fs::path bundleDirectory(const std::string& given) {
   if (!given.empty()) return given;
   const auto directory = defaultBundleDirectory();
@@ -163,32 +153,24 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
   if (error || !fs::is_directory(directory))
     throw InputError("--bundle: cannot create directory " + inQuotes(directory.string()) + " (" +
                      (error ? error.message() : "a file is in the way") + "); allowed: a directory");
-  const fs::path manifestPath = directory / ManifestName;
-  json manifest = readManifest(manifestPath);
-  manifest["format"] = ManifestFormat;
-  if (!manifest.contains("materials")) manifest["materials"] = json::object();
+  TableCache cache(directory);
 
   json written = json::array();
   ProgressLine progress;
   const auto bundle = measuredBundle();
   for (size_t i = 0; i < bundle.size(); ++i) {
     const BundleMaterial& material = bundle[i];
-    const fs::path file = directory / (std::string(material.name) + ".binary");
+    const fs::path file = cache.file(material.name);
     const json source{{"fit_file", BundleFitFile}, {"fit", material.fitLine}, {"perturbation", perturbationJson(perturbation)}};
-    const json& recorded = manifest["materials"].value(material.name, json::object());
-    const bool cached = !options.force && recorded.value("source", json()) == source &&
-                        fs::file_size(file, error) == merl::FileBytes && !error;
     json entry;
-    if (cached) {
+    if (!options.force && cache.holds(material.name, source)) {
       entry = {{"file", file.string()}, {"cached", true}};
     } else {
       const GroundTruth truth = fromFit(parsePublishedFitLine(material.fitLine), BundleFitFile);
       const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(bundle.size()) + "]";
       entry = synthesizeAndWrite(truth, perturbation, file, options.threads, progress, step);
       entry["cached"] = false;
-      manifest["materials"][material.name] = {{"file", file.filename().string()}, {"category", material.category},
-                                              {"source", source}};
-      writeTextFileAtomically(manifestPath, manifest.dump(2) + "\n");
+      cache.record(material.name, material.category, source);
     }
     entry["name"] = material.name;
     entry["category"] = material.category;
@@ -197,11 +179,11 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
     written.push_back(std::move(entry));
   }
   if (options.json)
-    std::cout << json{{"bundle", directory.string()}, {"manifest", manifestPath.string()}, {"written", written}}.dump(2)
+    std::cout << json{{"bundle", directory.string()}, {"manifest", cache.manifestPath().string()}, {"written", written}}.dump(2)
               << "\n";
   else
-    std::cout << "bundle: " << directory.string() << " (" << bundle.size() << " materials, manifest " << ManifestName
-              << ")\n";
+    std::cout << "bundle: " << directory.string() << " (" << bundle.size() << " materials, manifest "
+              << cache.manifestPath().filename().string() << ")\n";
   return static_cast<int>(ExitCode::Success);
 }
 

@@ -1,0 +1,115 @@
+#include "app/lab/lab_material.h"
+
+#include <set>
+
+#include "materials/bsdf/registry.h"
+#include "materials/bssrdf/subsurface_registry.h"
+#include "materials/measured/tabulated_brdf.h"
+#include "validation/chi_square_images.h"
+
+namespace scatterlab {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
+
+LabMaterial loadMeasured(std::string name, const fs::path& file) {
+  try {
+    return measuredLabMaterial(std::move(name), file, std::make_shared<const MerlTable>(readMerl(file)));
+  } catch (const MerlError& error) {
+    // The same words as the registry's measured entry.
+    throw MaterialError("material key \"file\": " + std::string(error.what()) +
+                        "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes)");
+  }
+}
+
+LabMaterial fromDescription(const std::string& name, const json& material) {
+  // A measured description goes through the registry's validation, then the table is read
+  // once and kept (its slices and fits need the table itself, not only the model).
+  if (material.is_object() && material.value("type", std::string()) == "measured") {
+    const json completed = completeMaterial(material);
+    LabMaterial loaded = loadMeasured(name, completed.at("file").get<std::string>());
+    loaded.description = completed;
+    return loaded;
+  }
+  return describedLabMaterial(name, material);
+}
+
+}  // namespace
+
+const char* toString(LabMaterialKind kind) {
+  switch (kind) {
+    case LabMaterialKind::Analytic: return "analytic";
+    case LabMaterialKind::Measured: return "measured";
+    case LabMaterialKind::Subsurface: return "subsurface";
+  }
+  return "analytic";
+}
+
+LabMaterial measuredLabMaterial(std::string name, const fs::path& file, std::shared_ptr<const MerlTable> table) {
+  LabMaterial m;
+  m.name = std::move(name);
+  m.kind = LabMaterialKind::Measured;
+  m.description = json{{"type", "measured"}, {"file", file.string()}};
+  m.bsdf = std::make_unique<TabulatedBrdf>(*table);
+  m.table = std::move(table);
+  m.about = "MERL table " + file.string();
+  return m;
+}
+
+LabMaterial describedLabMaterial(std::string name, const json& material) {
+  LabMaterial m;
+  m.name = std::move(name);
+  m.description = completeMaterial(material);
+  if (isSubsurfaceMaterial(material)) {
+    m.kind = LabMaterialKind::Subsurface;
+    m.subsurface = makeSubsurface(material);
+  } else {
+    m.kind = LabMaterialKind::Analytic;
+    m.bsdf = makeBsdf(material);
+  }
+  m.about = m.description.dump();
+  return m;
+}
+
+LabMaterial loadLabMaterial(const std::string& argument) {
+  if (!isInlineMaterial(argument) && endsWith(argument, ".binary"))
+    return loadMeasured(fs::path(argument).stem().string(), argument);
+  const json material = loadMaterialArgument(argument);
+  if (isInlineMaterial(argument)) {
+    const std::string type = material.is_object() ? material.value("type", std::string("material")) : "material";
+    LabMaterial loaded = fromDescription(type, material);
+    loaded.about = "Given as inline JSON: " + material.dump();
+    return loaded;
+  }
+  try {
+    LabMaterial loaded = fromDescription(fs::path(argument).stem().string(), material);
+    loaded.about = "file " + argument + ": " + loaded.description.dump();
+    return loaded;
+  } catch (const MaterialError& error) {
+    throw MaterialError("material file " + inQuotes(argument) + ": " + error.what());
+  }
+}
+
+void makeNamesUnique(std::vector<LabMaterial>& materials) {
+  std::set<std::string> names, folders;
+  for (LabMaterial& material : materials) {
+    const std::string base = material.name;
+    for (int copy = 2; !names.insert(material.name).second; ++copy) material.name = base + " #" + std::to_string(copy);
+    // Never empty and never starting with '.': no "..", no hidden folder.
+    std::string folderBase = safeFileStem(material.name);
+    if (folderBase.empty() || folderBase.front() == '.') folderBase = "material" + folderBase;
+    material.folder = folderBase;
+    for (int copy = 2; !folders.insert(material.folder).second; ++copy)
+      material.folder = folderBase + "-" + std::to_string(copy);
+  }
+}
+
+}  // namespace scatterlab

@@ -1,0 +1,149 @@
+// The lab report's renders (app/lab/renders_section.h): the renderer decides what is rendered
+// (a refusal is shown with its message, and a description of any type the renderer accepts is
+// rendered), and the difference of a fit is the difference of the two renders.
+//
+// Every scene here is lit by a white furnace (constant radiance 1): a convex Lambertian sphere
+// of albedo a then reflects exactly a toward the camera with zero variance (cosine-weighted
+// BSDF sampling gives every path the weight a, and every scattered ray escapes to the
+// environment), so the expected images and differences are exact numbers.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "app/exit_code.h"
+#include "app/lab/renders_section.h"
+#include "integrator/material_scene.h"
+#include "materials/bsdf/registry.h"
+
+#include "cli_runner.h"
+
+namespace scatterlab {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+LabSettings tinyRenders() {
+  LabSettings settings = LabSettings::quickMode(7);
+  settings.renderSize = 24;
+  settings.renderSpp = 4;
+  return settings;
+}
+
+std::vector<LabEnvironment> furnace() {
+  std::vector<LabEnvironment> environments;
+  environments.push_back({"furnace", "(constant 1)", Environment::constant(Rgb(1.0)), json::object()});
+  return environments;
+}
+
+LabMaterial lambertian(double albedo) {
+  LabMaterial m = describedLabMaterial("grey", {{"type", "lambertian"}, {"albedo", {albedo, albedo, albedo}}});
+  m.folder = "grey";
+  return m;
+}
+
+fs::path freshDir(const std::string& stem) {
+  const fs::path dir = cli_runner::uniquePath(stem);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// The integrator's own sphere, for any description, as a Lambertian of albedo 0.5: a renderer
+// that can render everything.
+Scene acceptEverything(const json&, const Environment& environment, int size) {
+  return makeMaterialScene(ScenePreset::MaterialSphere, json{{"type", "lambertian"}, {"albedo", {0.5, 0.5, 0.5}}},
+                           environment, size, size);
+}
+
+TEST(LabRenders, AMaterialTheRendererRefusesShowsTheRenderersMessage) {
+  const fs::path dir = freshDir("lab-renders-refused");
+  const SphereSceneFactory refuse = [](const json&, const Environment&, int) -> Scene {
+    throw MaterialError("this renderer renders nothing (test)");
+  };
+  const ReportSection section = rendersSection(lambertian(0.5), nullptr, tinyRenders(), furnace(), dir, {}, refuse);
+  EXPECT_EQ(renderRefusal(section), "this renderer renders nothing (test)");
+  ASSERT_EQ(section.data["refused"].size(), 1u);
+  EXPECT_TRUE(section.data["renders"].empty());
+  cli_runner::expectMentions(section.html, {"class=\"render-refused\"", "Not rendered: grey",
+                                            "this renderer renders nothing (test)"});
+  EXPECT_FALSE(fs::exists(dir / "render_furnace_material.png"));
+  EXPECT_TRUE(fs::exists(dir / "renders.json"));
+}
+
+// The section looks at no type: a subsurface description is rendered when the renderer accepts it.
+TEST(LabRenders, ADescriptionOfAnyTypeIsRenderedWhenTheRendererAcceptsIt) {
+  const fs::path dir = freshDir("lab-renders-any-type");
+  LabMaterial skin = describedLabMaterial("skin", {{"type", "subsurface"}});
+  skin.folder = "skin";
+  const ReportSection section = rendersSection(skin, nullptr, tinyRenders(), furnace(), dir, {}, acceptEverything);
+  EXPECT_EQ(renderRefusal(section), "");
+  ASSERT_EQ(section.data["renders"].size(), 1u);
+  // Albedo 0.5 under radiance 1: exactly 0.5 on the sphere (float pixels).
+  for (const json& channel : section.data["renders"][0]["sphere_mean_rgb"]) EXPECT_NEAR(channel.get<double>(), 0.5, 1e-6);
+  EXPECT_TRUE(fs::exists(dir / "render_furnace_material.png"));
+  EXPECT_TRUE(fs::exists(dir / "render_furnace_material.exr"));
+}
+
+// The integrator's material sphere refuses what makeBsdf refuses, with the registry's message.
+TEST(LabRenders, TheIntegratorsSphereSceneRefusesWhatTheRegistryCannotMakeABsdfOf) {
+  const json notABsdf{{"type", "no-such-model"}};
+  std::string registryMessage;
+  try {
+    makeBsdf(notABsdf);
+  } catch (const MaterialError& error) {
+    registryMessage = error.what();
+  }
+  ASSERT_FALSE(registryMessage.empty());
+  LabMaterial m = lambertian(0.5);
+  m.description = notABsdf;
+  const ReportSection section = rendersSection(m, nullptr, tinyRenders(), furnace(), freshDir("lab-renders-registry"), {});
+  EXPECT_EQ(renderRefusal(section), registryMessage);
+}
+
+// A fit identical to the material renders the same bits (same seed); a fit of albedo 0.25
+// against 0.5 differs by exactly half the material's value, with no noise under the furnace.
+// A fit without a description is listed with its problem.
+TEST(LabRenders, FitsAreRenderedBesideTheMaterialWithTheirDifference) {
+  const fs::path dir = freshDir("lab-renders-fits");
+  const LabMaterial material = lambertian(0.5);
+  MaterialFits fits;
+  fits.families.resize(3);
+  fits.families[0].name = "same";
+  fits.families[0].written.material = material.description;
+  fits.families[1].name = "darker";
+  fits.families[1].written.material = completeMaterial({{"type", "lambertian"}, {"albedo", {0.25, 0.25, 0.25}}});
+  fits.families[2].name = "unwritten";
+  fits.families[2].written.problem = "the fit did not converge (test)";
+  const ReportSection section = rendersSection(material, &fits, tinyRenders(), furnace(), dir, {});
+  ASSERT_EQ(section.data["renders"].size(), 3u);
+  ASSERT_EQ(section.data["differences"].size(), 2u);
+  const json& same = section.data["differences"][0];
+  EXPECT_EQ(same["relative_mean_abs_difference"].get<double>(), 0.0);
+  EXPECT_NEAR(same["relative_rms_noise"].get<double>(), 0.0, 1e-6);  // a variance of equal floats: rounding only
+  const json& darker = section.data["differences"][1];
+  EXPECT_NEAR(darker["relative_mean_abs_difference"].get<double>(), 0.5, 1e-6);
+  EXPECT_NEAR(darker["relative_rms_difference"].get<double>(), 0.5, 1e-6);
+  EXPECT_NEAR(darker["relative_rms_noise"].get<double>(), 0.0, 1e-6);
+  for (const char* file : {"render_furnace_fit2.png", "difference_furnace_fit2.png", "difference_furnace_fit2.exr"})
+    EXPECT_TRUE(fs::exists(dir / file)) << file;
+  ASSERT_EQ(section.data["refused"].size(), 1u);
+  EXPECT_EQ(section.data["refused"][0]["message"], "the fit did not converge (test)");
+  EXPECT_EQ(renderRefusal(section), "");  // the material itself was rendered
+  EXPECT_EQ(closestFitInRenders(section), "same: 0% (furnace)");
+  cli_runner::expectMentions(section.html, {"Not rendered: unwritten", "the fit did not converge (test)"});
+}
+
+TEST(LabRenders, AnUnreadableEnvironmentMapNamesTheFile) {
+  const fs::path missing = cli_runner::uniquePath("lab-renders-env") / "nowhere.exr";
+  try {
+    loadLabEnvironments({missing.string()});
+    FAIL() << "no error for " << missing;
+  } catch (const InputError& error) {
+    cli_runner::expectMentions(error.what(), {"--env", missing.string()});
+  }
+}
+
+}  // namespace
+}  // namespace scatterlab
