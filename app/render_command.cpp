@@ -19,6 +19,7 @@
 #include "integrator/png_io.h"
 #include "integrator/render.h"
 #include "integrator/render_error.h"
+#include "integrator/material_scene.h"
 #include "integrator/scene_presets.h"
 #include "integrator/silhouette_mask.h"
 #include "materials/bsdf/registry.h"
@@ -55,8 +56,7 @@ CLI::Validator resolutionValidator() {
 struct MaterialToRender {
   std::string label;
   json completed;
-  std::unique_ptr<BsdfModel> model;               // a BSDF, or
-  std::optional<SubsurfaceMaterial> subsurface;   // a subsurface material
+  RenderableMaterial material;
 };
 
 std::string defaultLabel(const std::string& argument, const json& material) {
@@ -67,15 +67,7 @@ std::string defaultLabel(const std::string& argument, const json& material) {
 MaterialToRender loadMaterial(const std::string& argument) {
   const json material = loadMaterialArgument(argument);
   try {
-    if (!isSubsurfaceMaterial(material))
-      return {defaultLabel(argument, material), completeMaterial(material), makeBsdf(material), std::nullopt};
-    SubsurfaceMaterial subsurface = makeSubsurface(material);
-    try {
-      makeSubsurfaceBoundary(subsurface);  // the renderer's own limits on the boundary
-    } catch (const std::invalid_argument& error) {
-      throw MaterialError(std::string("\"boundary\": ") + error.what());
-    }
-    return {defaultLabel(argument, material), completeMaterial(material), nullptr, std::move(subsurface)};
+    return {defaultLabel(argument, material), completeMaterial(material), makeRenderableMaterial(material)};
   } catch (const MaterialError& error) {
     if (isInlineMaterial(argument)) throw;
     throw MaterialError("material file " + inQuotes(argument) + ": " + error.what());
@@ -287,11 +279,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
     ProgressLine progress;
     for (size_t i = 0; i < materials.size(); ++i) {
       MaterialToRender& material = materials[i];
-      const Scene scene = material.subsurface
-                              ? makePresetScene(preset, *material.subsurface, subsurfaceMode, environment,
-                                                resolution->width, resolution->height)
-                              : makePresetScene(preset, std::move(material.model), environment, resolution->width,
-                                                resolution->height);
+      const Scene scene = makeMaterialScene(preset, std::move(material.material), subsurfaceMode, environment,
+                                            resolution->width, resolution->height);
       const std::string step = gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
       const ProgressCallback report = progress.callback("render " + step + material.label);
       RenderResult result = render(scene, settings, [&](double fraction) {

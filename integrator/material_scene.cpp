@@ -2,24 +2,34 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
-#include "integrator/subsurface.h"
 #include "materials/bsdf/registry.h"
-#include "materials/bssrdf/subsurface_registry.h"
 
 namespace scatterlab {
 
-Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment, int width,
-                        int height) {
-  if (!isSubsurfaceMaterial(material))
-    return makePresetScene(preset, makeBsdf(material), std::move(environment), width, height);
-  const SubsurfaceMaterial subsurface = makeSubsurface(material);
+RenderableMaterial makeRenderableMaterial(const nlohmann::json& material) {
+  if (!isSubsurfaceMaterial(material)) return {makeBsdf(material), std::nullopt};
+  SubsurfaceMaterial subsurface = makeSubsurface(material);
   try {
-    makeSubsurfaceBoundary(subsurface);  // the renderer's own limits on the boundary, as `scatterlab render`
+    makeSubsurfaceBoundary(subsurface);  // the renderer's own limits on the boundary
   } catch (const std::invalid_argument& error) {
     throw MaterialError(std::string("\"boundary\": ") + error.what());
   }
-  return makePresetScene(preset, subsurface, SubsurfaceMode::Diffusion, std::move(environment), width, height);
+  return {nullptr, std::move(subsurface)};
+}
+
+Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode, Environment environment,
+                        int width, int height) {
+  if (material.subsurface)
+    return makePresetScene(preset, *material.subsurface, mode, std::move(environment), width, height);
+  return makePresetScene(preset, std::move(material.bsdf), std::move(environment), width, height);
+}
+
+Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment, int width,
+                        int height) {
+  return makeMaterialScene(preset, makeRenderableMaterial(material), SubsurfaceMode::Diffusion,
+                           std::move(environment), width, height);
 }
 
 }  // namespace scatterlab
