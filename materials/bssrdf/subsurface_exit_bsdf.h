@@ -9,6 +9,7 @@
 #pragma once
 
 #include "materials/bsdf/bsdf.h"
+#include "materials/bsdf/cosine_lobe.h"
 #include "materials/bssrdf/separable_bssrdf.h"
 #include "materials/core/warp.h"
 
@@ -29,10 +30,7 @@ class SubsurfaceExitBsdf final : public BsdfModel {
   std::optional<BsdfSample> sample(const Vec3d& wi, double, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override {
     if (wi.z <= 0) return std::nullopt;
-    const Vec3d wo = sampleCosineHemisphere(u);
-    if (wo.z <= 0) return std::nullopt;
-    return BsdfSample{wo, Rgb(Pi * separableDirectional(wo.z, eta_, normalization_)), cosineHemispherePdf(wo.z),
-                      LobeFlags::DiffuseReflection, 1.0};
+    return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);  // weight Sw pi
   }
   LobeFlags flags() const override { return LobeFlags::DiffuseReflection; }
   bool isLossless() const override { return true; }
