@@ -141,7 +141,10 @@ MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& setting
   fits.options.startSamples = settings.fitStartSamples;
   fits.options.seed = settings.seed;
   for (size_t i = 0; i < settings.fitFamilies.size(); ++i) {
-    const auto& [name, spec] = settings.fitFamilies[i];
+    // Named, not a structured binding: the progress lambda captures spec (clang 14 cannot
+    // capture bindings).
+    const std::string& name = settings.fitFamilies[i].first;
+    const std::string& spec = settings.fitFamilies[i].second;
     FamilyFit f;
     f.name = name;
     f.spec = spec;
