@@ -1,6 +1,7 @@
 #include "app/shape_factor_command.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -20,29 +21,35 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* Metric =
-    "least squares of r R(r) over radius (annulus averages; Burley's exact from its CDF)";
+    "least squares of r R(r) over radius (annulus averages; Burley's exact from its CDF), the curve's power P "
+    "free (shape) or held at A (normalised)";
 
 void printTable(const ShapeFactorCommandOptions& options, const std::vector<fitting::BurleyShapeFit>& fits) {
   std::printf("Burley's searchlight shape factor fitted to the half-space random walk: normal incidence, mean free\n"
-              "path 1, g 0, index-matched, %llu paths per albedo; metric: %s, annuli of %g mfp.\n"
-              "Errors: r-weighted relative error of R(r) against the walk (L1 of the radial power over %d log-spaced\n"
-              "annuli, relative to the walk's total); noise: what the walk's noise alone adds to them.\n\n",
+              "path 1, g 0, index-matched, %llu paths per albedo; metric: %s;\n"
+              "annuli of %g mfp. Errors: r-weighted relative error of R(r) at power A against the walk (L1 of the\n"
+              "radial power over %d log-spaced annuli, relative to the walk's total) with the shape, normalised and\n"
+              "published s; noise: what the walk's noise alone adds to them.\n\n",
               static_cast<unsigned long long>(options.paths), Metric, options.annulusWidth, fitting::ErrorAnnuli);
-  std::printf("A      walk albedo c   walk total         fitted s           published s  difference  "
-              "fit error  published error  noise\n");
-  double sumDifference = 0.0, sumError = 0.0, sumPublished = 0.0;
+  std::printf("A      walk albedo c   walk total          shape s            power P   published s  difference  "
+              "normalised s       difference  errors: shape normalised published  noise\n");
+  double sumShape = 0.0, sumNormalised = 0.0, maxShape = 0.0;
   for (const fitting::BurleyShapeFit& f : fits) {
-    const double difference = f.shapeFactor / f.publishedShapeFactor - 1.0;
-    sumDifference += std::abs(difference);
-    sumError += f.fitError;
-    sumPublished += f.publishedError;
-    std::printf("%-6.3g %-15.10f %.5f +- %.5f  %.4f +- %.4f   %-12.4f %+9.1f%%  %8.1f%%  %15.1f%%  %4.1f%%\n", f.albedo,
-                f.walkAlbedo, f.walkReflectance, f.walkStdError, f.shapeFactor, f.shapeStdError, f.publishedShapeFactor,
-                100.0 * difference, 100.0 * f.fitError, 100.0 * f.publishedError, 100.0 * f.errorNoiseFloor);
+    const double shape = f.shapeFactor / f.publishedShapeFactor - 1.0;
+    const double normalised = f.normalisedShapeFactor / f.publishedShapeFactor - 1.0;
+    sumShape += std::abs(shape);
+    sumNormalised += std::abs(normalised);
+    maxShape = std::max(maxShape, std::abs(shape));
+    std::printf("%-6.3g %-15.10f %.5f +- %.5f  %.4f +- %.4f  %.4f    %-12.4f %+9.1f%%  %.4f +- %.4f %+9.1f%%  %13.1f%% "
+                "%9.1f%% %8.1f%%  %4.1f%%\n",
+                f.albedo, f.walkAlbedo, f.walkReflectance, f.walkStdError, f.shapeFactor, f.shapeStdError, f.power,
+                f.publishedShapeFactor, 100.0 * shape, f.normalisedShapeFactor, f.normalisedStdError, 100.0 * normalised,
+                100.0 * f.shapeError, 100.0 * f.normalisedError, 100.0 * f.publishedError, 100.0 * f.errorNoiseFloor);
   }
   const double n = double(fits.size());
-  std::printf("\nmean |difference| %.1f%%; mean error: fitted %.1f%%, published %.1f%%\n", 100.0 * sumDifference / n,
-              100.0 * sumError / n, 100.0 * sumPublished / n);
+  std::printf("\nshape s against published: mean |difference| %.1f%%, largest %.1f%%; normalised s: mean |difference| "
+              "%.1f%%\n",
+              100.0 * sumShape / n, 100.0 * maxShape, 100.0 * sumNormalised / n);
 }
 
 json tableJson(const ShapeFactorCommandOptions& options, const std::vector<fitting::BurleyShapeFit>& fits) {
@@ -52,21 +59,28 @@ json tableJson(const ShapeFactorCommandOptions& options, const std::vector<fitti
                     {"walk_albedo", f.walkAlbedo},
                     {"walk_total_reflectance", f.walkReflectance},
                     {"walk_std_error", f.walkStdError},
+                    {"published_shape_factor", f.publishedShapeFactor},
                     {"shape_factor", f.shapeFactor},
                     {"shape_factor_std_error", f.shapeStdError},
-                    {"published_shape_factor", f.publishedShapeFactor},
+                    {"power", f.power},
+                    {"power_std_error", f.powerStdError},
                     {"difference", f.shapeFactor / f.publishedShapeFactor - 1.0},
-                    {"fit_error", f.fitError},
+                    {"normalised_shape_factor", f.normalisedShapeFactor},
+                    {"normalised_std_error", f.normalisedStdError},
+                    {"normalised_difference", f.normalisedShapeFactor / f.publishedShapeFactor - 1.0},
+                    {"shape_error", f.shapeError},
+                    {"normalised_error", f.normalisedError},
                     {"published_error", f.publishedError},
                     {"error_noise_floor", f.errorNoiseFloor},
-                    {"termination", f.fit.termination}});
+                    {"termination", f.shapeFit.termination},
+                    {"normalised_termination", f.normalisedFit.termination}});
   return {{"configuration", "searchlight: normal incidence, mean free path 1, g 0, index-matched"},
           {"metric", Metric},
           {"annulus_width", options.annulusWidth},
           {"paths", options.paths},
           {"seed", options.seed},
           {"published", "s = 1.85 - A + 7 |A - 0.8|^3 (Christensen & Burley 2015)"},
-          {"errors", "r-weighted relative error of R(r) against the walk"},
+          {"errors", "r-weighted relative error of R(r) at power A against the walk"},
           {"rows", std::move(rows)}};
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Dense>
 #include <ceres/jet.h>
 
 #include "materials/bssrdf/annulus_profile.h"
@@ -30,14 +31,56 @@ HalfSpaceWalkSettings burleyShapeWalkSettings(double albedo, uint64_t paths, uin
 
 namespace {
 
-// Burley's annulus averages at s (with the derivative in s when T is a Jet).
-template <typename T>
-std::vector<T> burleyAnnulusMeans(const BurleyShapeProfile& profile, const T& s, const std::vector<double>& edges) {
+// The profile's annulus averages at parameters p (with their derivatives when T is a Jet).
+template <typename Profile, typename T>
+std::vector<T> annulusMeans(const Profile& profile, const T* p, const std::vector<double>& edges) {
   std::vector<T> means;
   for (size_t k = 0; k + 1 < edges.size(); ++k)
-    means.push_back((profile.cumulative(&s, edges[k + 1]) - profile.cumulative(&s, edges[k])) /
+    means.push_back((profile.cumulative(p, edges[k + 1]) - profile.cumulative(p, edges[k])) /
                     (Pi * (sqr(edges[k + 1]) - sqr(edges[k]))));
   return means;
+}
+
+// Least squares of r R(r) on the walk's annuli, started at `start`.
+template <typename Profile>
+RadialFitResult fitRadiusWeighted(const Profile& profile, const HalfSpaceWalkResult& walk, std::vector<double> start,
+                                  std::vector<double> lower, std::vector<double> upper) {
+  const std::vector<double>& edges = walk.settings.radiusEdges;
+  RadialFitOptions options;
+  options.start = std::move(start);
+  options.lower = std::move(lower);
+  options.upper = std::move(upper);
+  options.weighting = RadialWeighting::Radius;
+  for (size_t k = 0; k + 1 < edges.size(); ++k) options.weights.push_back(std::sqrt(edges[k + 1] - edges[k]));
+  return fitRadialAnnuli(profile, edges, walk.profile, options);
+}
+
+// The walk's noise in the fitted parameters. For weighted least squares with residual weights
+// w_k and sensitivities J_k = d Rbar_k / dp, the estimate moves by
+// (sum_k w_k^2 J_k J_k^T)^-1 sum_k w_k^2 J_k e_k for annulus errors e_k with standard errors
+// se_k (their weak multinomial correlation neglected): the sandwich H^-1 M H^-1 with
+// M = sum_k w_k^4 se_k^2 J_k J_k^T. Returns the standard deviations.
+template <typename Profile>
+std::vector<double> walkNoiseStdDeviations(const Profile& profile, const std::vector<double>& parameters,
+                                           const HalfSpaceWalkResult& walk) {
+  constexpr int K = Profile::ParameterCount;
+  using Jet = ceres::Jet<double, K>;
+  const std::vector<double>& edges = walk.settings.radiusEdges;
+  Jet p[K];
+  for (int i = 0; i < K; ++i) p[i] = Jet(parameters[i], i);
+  const std::vector<Jet> model = annulusMeans(profile, p, edges);
+  Eigen::Matrix<double, K, K> H = Eigen::Matrix<double, K, K>::Zero(), M = H;
+  for (size_t k = 0; k < model.size(); ++k) {
+    const double mid = 0.5 * (edges[k] + edges[k + 1]);
+    const double w2 = sqr(mid) * (edges[k + 1] - edges[k]);
+    H += w2 * model[k].v * model[k].v.transpose();
+    M += sqr(w2 * walk.profileStdError[k]) * model[k].v * model[k].v.transpose();
+  }
+  const Eigen::Matrix<double, K, K> Hinv = H.inverse();
+  const Eigen::Matrix<double, K, K> covariance = Hinv * M * Hinv;
+  std::vector<double> out;
+  for (int i = 0; i < K; ++i) out.push_back(std::sqrt(std::max(0.0, covariance(i, i))));
+  return out;
 }
 
 }  // namespace
@@ -51,30 +94,20 @@ BurleyShapeFit fitBurleyShapeFactor(const HalfSpaceWalkResult& walk, double albe
   out.walkReflectance = walk.totalReflectance;
   out.walkStdError = walk.totalStdError;
   out.publishedShapeFactor = burleyShapeFactor(BurleyFit::Searchlight, albedo);
+  const double length = 1.0 / walk.settings.extinction;
 
-  RadialFitOptions options;
-  options.start = {out.publishedShapeFactor};
-  options.lower = {1e-2};
-  options.upper = {100.0};
-  options.weighting = RadialWeighting::Radius;
-  for (size_t k = 0; k + 1 < edges.size(); ++k) options.weights.push_back(std::sqrt(edges[k + 1] - edges[k]));
-  const BurleyShapeProfile profile{albedo, 1.0 / walk.settings.extinction};
-  out.fit = fitRadialAnnuli(profile, edges, walk.profile, options);
-  out.shapeFactor = out.fit.parameters[0];
+  const BurleyPowerAndShapeProfile shape{length};
+  out.shapeFit = fitRadiusWeighted(shape, walk, {albedo, out.publishedShapeFactor}, {0.0, 1e-2}, {2.0, 100.0});
+  out.power = out.shapeFit.parameters[0];
+  out.shapeFactor = out.shapeFit.parameters[1];
+  const std::vector<double> shapeNoise = walkNoiseStdDeviations(shape, out.shapeFit.parameters, walk);
+  out.powerStdError = shapeNoise[0];
+  out.shapeStdError = shapeNoise[1];
 
-  // The walk's noise in s: for the least-squares estimate with weights w_k and sensitivities
-  // J_k = d Rbar_k / ds, s - s_true ~ sum_k w_k^2 J_k e_k / sum_k w_k^2 J_k^2 for annulus
-  // errors e_k with standard errors se_k (their weak multinomial correlation neglected).
-  using Jet = ceres::Jet<double, 1>;
-  const std::vector<Jet> model = burleyAnnulusMeans(profile, Jet(out.shapeFactor, 0), edges);
-  double numerator = 0.0, denominator = 0.0;
-  for (size_t k = 0; k < model.size(); ++k) {
-    const double w2 = sqr(detail::radialWeight(RadialWeighting::Radius, 0.5 * (edges[k] + edges[k + 1]), 0.0) *
-                          options.weights[k]);
-    numerator += sqr(w2 * model[k].v[0] * walk.profileStdError[k]);
-    denominator += w2 * sqr(model[k].v[0]);
-  }
-  out.shapeStdError = denominator > 0 ? std::sqrt(numerator) / denominator : 0.0;
+  const BurleyShapeProfile normalised{albedo, length};
+  out.normalisedFit = fitRadiusWeighted(normalised, walk, {out.publishedShapeFactor}, {1e-2}, {100.0});
+  out.normalisedShapeFactor = out.normalisedFit.parameters[0];
+  out.normalisedStdError = walkNoiseStdDeviations(normalised, out.normalisedFit.parameters, walk)[0];
 
   // The errors on 32 log-spaced groups of annuli, with the power beyond the last edge: the
   // walk's escapes there, and Burley's tail.
@@ -85,10 +118,11 @@ BurleyShapeFit fitBurleyShapeFactor(const HalfSpaceWalkResult& walk, double albe
   for (const uint64_t c : walk.counts) inside += c;
   const double walkBeyond = double(walk.escaped - inside) / double(walk.settings.paths);
   const auto error = [&](double s) {
-    const double beyond = albedo - profile.cumulative(&s, edges.back());
-    return radialRelativeError(coarse, burleyAnnulusMeans(profile, s, coarse), walkMeans, beyond, walkBeyond);
+    const double beyond = albedo - normalised.cumulative(&s, edges.back());
+    return radialRelativeError(coarse, annulusMeans(normalised, &s, coarse), walkMeans, beyond, walkBeyond);
   };
-  out.fitError = error(out.shapeFactor);
+  out.shapeError = error(out.shapeFactor);
+  out.normalisedError = error(out.normalisedShapeFactor);
   out.publishedError = error(out.publishedShapeFactor);
   out.errorNoiseFloor = radialNoiseFloor(coarse, walkMeans, double(walk.settings.paths));
   return out;

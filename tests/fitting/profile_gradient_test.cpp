@@ -147,6 +147,8 @@ TEST(ProfileGradients, BurleyShapeFactor) {
   for (const double A : {0.2, 0.8, 0.99}) {
     const BurleyShapeProfile profile{A, 1.0};
     expectAnnulusGradients(profile, {burleyShapeFactor(BurleyFit::Searchlight, A)}, "burley s, A " + std::to_string(A));
+    expectAnnulusGradients(BurleyPowerAndShapeProfile{1.0}, {0.9 * A, burleyShapeFactor(BurleyFit::Searchlight, A)},
+                           "burley (P, s), A " + std::to_string(A));
   }
 }
 
