@@ -107,8 +107,9 @@ TEST(ShapeFactorCli, FitsAndComparesWithThePublishedFit) {
     // 30000 paths: the walk's noise in s is ~2%; the shape fit (0.7% and 2.5% from the
     // published s at these albedos with 4e6 paths) lands within 10%.
     EXPECT_NEAR(row["shape_factor"].get<double>() / row["published_shape_factor"].get<double>(), 1.0, 0.1);
-    EXPECT_GT(row["power"].get<double>(), 0.0);
-    EXPECT_LT(row["power"].get<double>(), a);
+    // The shape fit's power leaves out only the tail Burley's shape cannot follow: P / A is
+    // 0.99 at A = 0.3 and 0.95 at 0.8 with 4e6 paths (README), so within 10% of A here.
+    EXPECT_NEAR(row["power"].get<double>() / a, 1.0, 0.1);
     EXPECT_GT(row["normalised_shape_factor"].get<double>(), 0.0);
     EXPECT_EQ(row["termination"], "CONVERGENCE");
     EXPECT_EQ(row["normalised_termination"], "CONVERGENCE");
