@@ -46,7 +46,8 @@ struct MaterialUnderTest {
 MaterialUnderTest prepareMaterial(std::string label, const json& material, bool negativeControls) {
   if (isSubsurfaceMaterial(material))
     return {std::move(label), completeMaterial(material), nullptr, makeSubsurface(material), nullptr};
-  MaterialUnderTest prepared{std::move(label), completeMaterial(material), makeBsdf(material), std::nullopt, nullptr};
+  MaterialUnderTest prepared{std::move(label), completeMaterial(material), makeBsdf(material), std::nullopt,
+                             nullptr};
   if (negativeControls) prepared.roughnessMismatchSampler = makeRoughnessMismatchSampler(material);
   return prepared;
 }
@@ -68,7 +69,8 @@ void makeLabelsUnique(std::vector<MaterialUnderTest>& materials) {
   std::set<std::string> used;
   for (MaterialUnderTest& material : materials) {
     const std::string base = material.label;
-    for (int copy = 2; !used.insert(material.label).second; ++copy) material.label = base + " #" + std::to_string(copy);
+    for (int copy = 2; !used.insert(material.label).second; ++copy)
+      material.label = base + " #" + std::to_string(copy);
   }
 }
 
@@ -93,20 +95,20 @@ void createImageDirectory(const std::filesystem::path& directory) {
                      "); allowed: a directory, or a path where one can be created");
 }
 
-CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOptions& kit, bool negativeControls,
-                          const ProgressCallback& progress) {
+CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOptions& kit,
+                          bool negativeControls, const ProgressCallback& progress) {
   if (material.subsurface) {
-    CheckReport report =
-        runSubsurfaceChecks(material.subsurface->bssrdf(), material.label, subsurfaceCheckOptions(kit), progress);
+    CheckReport report = runSubsurfaceChecks(material.subsurface->bssrdf(), material.label,
+                                             subsurfaceCheckOptions(kit), progress);
     if (negativeControls)
-      report.append(
-          runSubsurfaceNegativeControls(*material.subsurface->profile, material.label, subsurfaceCheckOptions(kit), progress));
+      report.append(runSubsurfaceNegativeControls(*material.subsurface->profile, material.label,
+                                                  subsurfaceCheckOptions(kit), progress));
     return report;
   }
   CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
   if (negativeControls)
-    report.append(
-        runNegativeControls(*material.model, material.roughnessMismatchSampler.get(), material.label, kit, progress));
+    report.append(runNegativeControls(*material.model, material.roughnessMismatchSampler.get(),
+                                      material.label, kit, progress));
   return report;
 }
 
@@ -134,7 +136,8 @@ void printJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit,
   json materialsJson = json::array();
   for (const MaterialUnderTest& material : materials) {
     materialsJson.push_back({{"label", material.label}, {"material", material.completed}});
-    if (const auto missing = missingCellsOf(material.model.get())) materialsJson.back()["missing_cells"] = *missing;
+    if (const auto missing = missingCellsOf(material.model.get()))
+      materialsJson.back()["missing_cells"] = *missing;
   }
   const json document{{"options", optionsJson(options, kit)},
                       {"materials", std::move(materialsJson)},
@@ -178,10 +181,12 @@ SubsurfaceCheckOptions subsurfaceCheckOptions(const BsdfCheckOptions& kit) {
 
 CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "check", "Test materials' sampling, pdf, energy and reciprocity statistically; exit 0 only if all pass");
+      "check",
+      "Test materials' sampling, pdf, energy and reciprocity statistically; exit 0 only if all pass");
   BsdfCheckOptions& kit = options.kit;
-  command->add_option("material", options.materials,
-                      "Materials: inline JSON ('{\"type\": \"conductor\"}') or JSON files; none: a built-in showcase");
+  command->add_option(
+      "material", options.materials,
+      "Materials: inline JSON ('{\"type\": \"conductor\"}') or JSON files; none: a built-in showcase");
   // One value per --wi-theta, split at commas, so that the materials after it stay positional.
   command->add_option("--wi-theta", kit.wiThetaDeg, "Incident polar angles in degrees, comma-separated")
       ->type_name("DEGREES")
@@ -213,7 +218,9 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
       ->type_name("INTEGER")
       ->transform(integerIn(0))
       ->capture_default_str();
-  command->add_option("--alpha", kit.alpha, "Family-wise significance, Sidak-corrected over every chi-square test")
+  command
+      ->add_option("--alpha", kit.alpha,
+                   "Family-wise significance, Sidak-corrected over every chi-square test")
       ->type_name("NUMBER")
       ->check(numberIn(ValueRange{0.0, 0.5, true, false}))
       ->capture_default_str();
@@ -225,20 +232,23 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
       ->check(outputDirectoryValidator());
   command->add_flag("--negative-controls", options.negativeControls,
                     "Also run deliberately wrong samplers, which the kit must reject");
-  command->add_flag("--json", options.json, "Print one JSON document: completed materials, every row, the verdict");
+  command->add_flag("--json", options.json,
+                    "Print one JSON document: completed materials, every row, the verdict");
   return command;
 }
 
 int runCheckCommand(const CheckCommandOptions& options) {
   if (options.kit.wiThetaDeg.empty())
-    throw InputError("--wi-theta: no angle given; allowed: degrees in [0, 90), comma-separated, e.g. 0,30,60,85,89");
+    throw InputError(
+        "--wi-theta: no angle given; allowed: degrees in [0, 90), comma-separated, e.g. 0,30,60,85,89");
   const std::vector<MaterialUnderTest> materials = prepareMaterials(options);
 
   BsdfCheckOptions kit = options.kit;
   kit.chiSquareTestCount = 0;
   for (const MaterialUnderTest& material : materials)
-    kit.chiSquareTestCount +=
-        material.subsurface ? subsurfaceChiSquareTestCount(*material.subsurface->profile) : chiSquareTestCount(kit);
+    kit.chiSquareTestCount += material.subsurface
+                                  ? subsurfaceChiSquareTestCount(*material.subsurface->profile)
+                                  : chiSquareTestCount(kit);
   if (kit.imageDir) createImageDirectory(*kit.imageDir);
 
   CheckReport report;

@@ -11,8 +11,8 @@
 #include "app/lab/lab_command.h"
 #include "app/models_command.h"
 #include "app/profile_command.h"
-#include "app/shape_factor_command.h"
 #include "app/render_command.h"
+#include "app/shape_factor_command.h"
 #include "app/synth_command.h"
 #include "materials/bsdf/registry.h"
 
@@ -35,9 +35,10 @@ int exitCodeOfParseError(const CLI::App& app, const CLI::ParseError& error) {
 }  // namespace
 
 int runCli(int argc, char** argv) {
-  CLI::App app{"scatterlab: a laboratory for reflectance models. Checks a material's sampling "
-               "statistically; every material is a JSON object, see `scatterlab models`.",
-               "scatterlab"};
+  CLI::App app{
+      "scatterlab: a laboratory for reflectance models. Checks a material's sampling "
+      "statistically; every material is a JSON object, see `scatterlab models`.",
+      "scatterlab"};
   app.set_version_flag("--version", std::string("scatterlab ") + SCATTERLAB_VERSION);
   app.require_subcommand(1);
   app.failure_message([](const CLI::App*, const CLI::Error& error) {

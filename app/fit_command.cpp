@@ -67,17 +67,19 @@ LoadedData loadData(const std::string& data, int threads, ProgressLine& progress
     try {
       table = readMerl(data);
     } catch (const MerlError& error) {
-      throw InputError(std::string(error.what()) +
-                       "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes), or a material as inline JSON "
-                       "or a .json file");
+      throw InputError(
+          std::string(error.what()) +
+          "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes), or a material as inline JSON "
+          "or a .json file");
     }
     loaded.label = data;
     loaded.kind = "merl";
   }
   loaded.samples = samplesFromMerl(table, &loaded.counts);
   if (loaded.samples.empty())
-    throw InputError("DATA " + inQuotes(loaded.label) + ": no valid cells (" + std::to_string(loaded.counts.missing) +
-                     " missing, " + std::to_string(loaded.counts.unreachable) +
+    throw InputError("DATA " + inQuotes(loaded.label) + ": no valid cells (" +
+                     std::to_string(loaded.counts.missing) + " missing, " +
+                     std::to_string(loaded.counts.unreachable) +
                      " below the horizon); allowed: a table with measured cells");
   return loaded;
 }
@@ -103,53 +105,65 @@ std::string rangeText(const ParameterEstimate& e) {
 void printReport(const FitCommandOptions& options, const LoadedData& data, const FitResult& result,
                  const WrittenMaterial& written, const FitVerdict& verdict, const std::string& writtenPath) {
   std::printf("fit: %s to %s\n", options.model.c_str(), data.label.c_str());
-  std::printf("data: %zu usable cells (%zu missing, %zu below the horizon); fitted on %s\n", data.counts.usable,
-              data.counts.missing, data.counts.unreachable,
-              result.samples == data.counts.usable ? "all of them"
-                                                   : ("a stratified subset of " + std::to_string(result.samples)).c_str());
+  std::printf("data: %zu usable cells (%zu missing, %zu below the horizon); fitted on %s\n",
+              data.counts.usable, data.counts.missing, data.counts.unreachable,
+              result.samples == data.counts.usable
+                  ? "all of them"
+                  : ("a stratified subset of " + std::to_string(result.samples)).c_str());
   const Metric metric = *parseMetric(options.metric);
   std::printf("metric: %s; robust loss: %s", describe(metric).c_str(), options.robust.c_str());
   if (result.robustScale > 0) std::printf(" (scale %.4g)", result.robustScale);
-  std::printf("\ngrid: %zu points on %zu samples; starts on %zu samples:\n", result.gridPoints, result.gridSamples,
-              result.startSamples);
-  std::printf("  %-5s %14s %14s %10s  %s\n", "start", "initial cost", "final cost", "iterations", "termination");
+  std::printf("\ngrid: %zu points on %zu samples; starts on %zu samples:\n", result.gridPoints,
+              result.gridSamples, result.startSamples);
+  std::printf("  %-5s %14s %14s %10s  %s\n", "start", "initial cost", "final cost", "iterations",
+              "termination");
   for (size_t s = 0; s < result.starts.size(); ++s)
-    std::printf("  %-5zu %14.6g %14.6g %10d  %s\n", s + 1, result.starts[s].initialCost, result.starts[s].finalCost,
-                result.starts[s].iterations, result.starts[s].termination.c_str());
-  std::printf("final: cost %.6g, %d iterations, %s (%s), %.2f s\n\n", result.final.finalCost, result.final.iterations,
-              result.final.termination.c_str(), result.final.message.c_str(), result.seconds);
+    std::printf("  %-5zu %14.6g %14.6g %10d  %s\n", s + 1, result.starts[s].initialCost,
+                result.starts[s].finalCost, result.starts[s].iterations,
+                result.starts[s].termination.c_str());
+  std::printf("final: cost %.6g, %d iterations, %s (%s), %.2f s\n\n", result.final.finalCost,
+              result.final.iterations, result.final.termination.c_str(), result.final.message.c_str(),
+              result.seconds);
   std::printf("%-40s %14s %12s  %s\n", "parameter", "value", "std dev", "range");
   for (const ParameterEstimate& e : result.parameters)
-    std::printf("%-40s %14.6g %12.3g  %s%s\n", e.name.c_str(), e.value, e.standardDeviation, rangeText(e).c_str(),
-                e.atBound ? "  at bound" : "");
+    std::printf("%-40s %14.6g %12.3g  %s%s\n", e.name.c_str(), e.value, e.standardDeviation,
+                rangeText(e).c_str(), e.atBound ? "  at bound" : "");
   std::printf("error bars: sigma^2 = cost / (N - p) = %.4g (N = %zu observations, p = %zu parameters)%s\n",
               result.sigma2, result.observations, result.parameters.size(),
               result.covarianceAvailable ? "" : "; covariance not available");
   for (const std::string& direction : result.unidentified)
-    std::printf("warning: rank deficient: %s cannot be determined from the data; the error bars are the "
-                "pseudo-inverse's\n",
-                direction.c_str());
+    std::printf(
+        "warning: rank deficient: %s cannot be determined from the data; the error bars are the "
+        "pseudo-inverse's\n",
+        direction.c_str());
   std::printf("\n%-8s %14s %16s\n", "channel", "rms (metric)", "relative error");
-  for (int c = 0; c < 3; ++c) std::printf("%-8c %14.6g %16.4g\n", "rgb"[c], result.rms[c], result.relativeError[c]);
+  for (int c = 0; c < 3; ++c)
+    std::printf("%-8c %14.6g %16.4g\n", "rgb"[c], result.rms[c], result.relativeError[c]);
   std::printf("\nverdict: %s\n", verdict.good ? "GOOD" : "POOR");
   for (const std::string& problem : verdict.problems) std::printf("  %s\n", problem.c_str());
   if (written.material) std::printf("material: %s\n", written.material->dump().c_str());
-  if (!writtenPath.empty()) std::printf("wrote %s\n", writtenPath.c_str());
-  else if (!options.out.empty()) std::printf("not written: the fit is poor\n");
+  if (!writtenPath.empty())
+    std::printf("wrote %s\n", writtenPath.c_str());
+  else if (!options.out.empty())
+    std::printf("not written: the fit is poor\n");
 }
 
 }  // namespace
 
 CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "fit", "Fit registry models to a MERL table (or a material tabulated like one) with Ceres, with error bars; "
-             "writes the fitted material as registry JSON");
-  command->add_option("data", options.data, "MERL .binary file, or a material (inline JSON or a .json file) to tabulate")
+      "fit",
+      "Fit registry models to a MERL table (or a material tabulated like one) with Ceres, with error bars; "
+      "writes the fitted material as registry JSON");
+  command
+      ->add_option("data", options.data,
+                   "MERL .binary file, or a material (inline JSON or a .json file) to tabulate")
       ->required();
   command
-      ->add_option("--model", options.model,
-                   "Registry types joined by '+', e.g. lambertian+ngan-cook-torrance; a part may be a JSON object "
-                   "whose values are held, e.g. lambertian+{\"type\":\"conductor\",\"distribution\":\"beckmann\"}")
+      ->add_option(
+          "--model", options.model,
+          "Registry types joined by '+', e.g. lambertian+ngan-cook-torrance; a part may be a JSON object "
+          "whose values are held, e.g. lambertian+{\"type\":\"conductor\",\"distribution\":\"beckmann\"}")
       ->type_name("SPEC")
       ->required();
   command->add_option("--metric", options.metric, "Error metric: l2, ngan, low-l2, low-log, cube-root")
@@ -165,13 +179,16 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
       ->check(choiceOf(robustLossNames(), "a robust loss"))
       ->capture_default_str();
   command
-      ->add_option("--robust-scale", options.robustScale,
-                   "Scale of the robust loss in residual units (default: 2.5 robust standard deviations of the "
-                   "residuals at the best grid point)")
+      ->add_option(
+          "--robust-scale", options.robustScale,
+          "Scale of the robust loss in residual units (default: 2.5 robust standard deviations of the "
+          "residuals at the best grid point)")
       ->type_name("S")
       ->check(numberIn(ValueRange::above(0.0)));
   command->add_flag("--per-channel", options.perChannel, "Fit the shape parameters per colour channel");
-  command->add_option("--samples", options.samples, "Fit a stratified subset of about N cells (0: every usable cell)")
+  command
+      ->add_option("--samples", options.samples,
+                   "Fit a stratified subset of about N cells (0: every usable cell)")
       ->type_name("N")
       ->transform(integerIn(0))
       ->capture_default_str();
@@ -183,7 +200,9 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
       ->type_name("N")
       ->transform(integerIn(1, 16))
       ->capture_default_str();
-  command->add_option("--grid-points", options.gridPoints, "Budget of the initial grid over the shape parameters")
+  command
+      ->add_option("--grid-points", options.gridPoints,
+                   "Budget of the initial grid over the shape parameters")
       ->type_name("N")
       ->transform(integerIn(1, 100000))
       ->capture_default_str();
@@ -192,17 +211,22 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
       ->transform(integerIn(1, 100000))
       ->capture_default_str();
   command
-      ->add_option("--max-relative-error", options.maxRelativeError,
-                   "A fit whose relative error (in the metric) exceeds this in any channel is poor: reported, not "
-                   "written, exit 1")
+      ->add_option(
+          "--max-relative-error", options.maxRelativeError,
+          "A fit whose relative error (in the metric) exceeds this in any channel is poor: reported, not "
+          "written, exit 1")
       ->type_name("E")
       ->check(numberIn(ValueRange::above(0.0)))
       ->capture_default_str();
-  command->add_option("--threads", options.threads, "Worker threads (0: all cores); the result does not depend on it")
+  command
+      ->add_option("--threads", options.threads,
+                   "Worker threads (0: all cores); the result does not depend on it")
       ->type_name("N")
       ->transform(integerIn(0, 1024))
       ->capture_default_str();
-  command->add_option("--out", options.out, "Write the fitted material (registry JSON) here, atomically, if the fit is good")
+  command
+      ->add_option("--out", options.out,
+                   "Write the fitted material (registry JSON) here, atomically, if the fit is good")
       ->type_name("FILE");
   command->add_flag("--json", options.json, "Print the whole report as JSON");
   return command;

@@ -14,19 +14,21 @@ std::string format(const char* pattern, double value) {
 
 }  // namespace
 
-FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMaterial& written, double maxRelativeError) {
+FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMaterial& written,
+                    double maxRelativeError) {
   FitVerdict verdict;
   const auto fail = [&](std::string problem) {
     verdict.good = false;
     verdict.problems.push_back(std::move(problem));
   };
   if (!result.final.converged)
-    fail("did not converge: " + result.final.termination + " after " + std::to_string(result.final.iterations) +
-         " iterations (" + result.final.message + ")");
+    fail("did not converge: " + result.final.termination + " after " +
+         std::to_string(result.final.iterations) + " iterations (" + result.final.message + ")");
   for (int c = 0; c < 3; ++c)
     if (!(result.relativeError[c] <= maxRelativeError))
-      fail(std::string("relative error of channel ") + "rgb"[c] + " " + format("%.3g", result.relativeError[c]) +
-           " exceeds --max-relative-error " + format("%g", maxRelativeError));
+      fail(std::string("relative error of channel ") + "rgb"[c] + " " +
+           format("%.3g", result.relativeError[c]) + " exceeds --max-relative-error " +
+           format("%g", maxRelativeError));
   if (!written.material) fail("no registry material: " + written.problem);
   return verdict;
 }

@@ -20,6 +20,7 @@ struct FitVerdict {
 
 // Poor when Ceres did not converge, a channel's relative error exceeds maxRelativeError, or the
 // fitted sum has no registry form.
-FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMaterial& written, double maxRelativeError);
+FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMaterial& written,
+                    double maxRelativeError);
 
 }  // namespace scatterlab

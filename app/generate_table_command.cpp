@@ -31,21 +31,23 @@ std::string formatArray(const char* name, const std::vector<double>& values) {
   for (int i = 0; i < WhiteAlbedoGrid::AlphaNodes; ++i) {
     out += "    // alpha = " + formatDouble(WhiteAlbedoGrid::alphaNode(i)) + "\n";
     for (int j = 0; j < WhiteAlbedoGrid::CosNodes; ++j) {
-      out += (j % 4 == 0 ? "    " : " ") + formatDouble(values[size_t(i) * WhiteAlbedoGrid::CosNodes + j]) + ",";
+      out +=
+          (j % 4 == 0 ? "    " : " ") + formatDouble(values[size_t(i) * WhiteAlbedoGrid::CosNodes + j]) + ",";
       if (j % 4 == 3 || j + 1 == WhiteAlbedoGrid::CosNodes) out += "\n";
     }
   }
   return out + "};\n";
 }
 
-std::vector<double> computeWhiteAlbedoTable(MicrofacetType type, std::atomic<int>& done, ProgressLine& progress,
-                                            const std::string& label) {
+std::vector<double> computeWhiteAlbedoTable(MicrofacetType type, std::atomic<int>& done,
+                                            ProgressLine& progress, const std::string& label) {
   std::vector<double> values(WhiteAlbedoGrid::NodeCount);
   const auto callback = progress.callback(label);
   // Nodes are independent and each is computed the same way on any thread: the table does
   // not depend on the thread count.
   tbb::parallel_for(0, WhiteAlbedoGrid::NodeCount, [&](int n) {
-    values[size_t(n)] = computeWhiteAlbedoNode(type, n / WhiteAlbedoGrid::CosNodes, n % WhiteAlbedoGrid::CosNodes);
+    values[size_t(n)] =
+        computeWhiteAlbedoNode(type, n / WhiteAlbedoGrid::CosNodes, n % WhiteAlbedoGrid::CosNodes);
     const int count = ++done;
     if (callback) callback("", double(count) / (2.0 * WhiteAlbedoGrid::NodeCount));
   });
@@ -60,12 +62,16 @@ std::string whiteAlbedoTableSource(const std::vector<double>& ggx, const std::ve
                                    const std::string& command) {
   std::string out =
       "// GENERATED FILE - do not edit. Regenerate with\n"
-      "//   " + command + "\n"
+      "//   " +
+      command +
+      "\n"
       "// E(mu, alpha): directional albedo of single-scattering GGX and Beckmann reflection with\n"
       "// Fresnel = 1 and Smith height-correlated masking-shadowing, at the nodes of WhiteAlbedoGrid\n"
-      "// (materials/bsdf/white_microfacet_albedo.h): " + std::to_string(WhiteAlbedoGrid::AlphaNodes) +
+      "// (materials/bsdf/white_microfacet_albedo.h): " +
+      std::to_string(WhiteAlbedoGrid::AlphaNodes) +
       " rows uniform in sqrt(alpha) from alpha = 0.001 to 1,\n"
-      "// each of " + std::to_string(WhiteAlbedoGrid::CosNodes) +
+      "// each of " +
+      std::to_string(WhiteAlbedoGrid::CosNodes) +
       " values uniform in u, mu = c alpha t / (1 + c alpha - t), t = sin^4(pi u / 2), c = 4.\n"
       "// Each node is whiteMicrofacetAlbedo() at whiteAlbedoQuadrature(): adaptive Simpson over the\n"
       "// visible-normal sample square, tolerance 1e-7, absolute error below 1e-6; mu = 0 is the\n"
@@ -73,7 +79,8 @@ std::string whiteAlbedoTableSource(const std::vector<double>& ggx, const std::ve
       "#include \"materials/bsdf/white_microfacet_albedo.h\"\n\n"
       "namespace scatterlab {\n\n"
       "// The grid these values belong to; changing it means regenerating this file.\n"
-      "static_assert(WhiteAlbedoGrid::AlphaNodes == " + std::to_string(WhiteAlbedoGrid::AlphaNodes) +
+      "static_assert(WhiteAlbedoGrid::AlphaNodes == " +
+      std::to_string(WhiteAlbedoGrid::AlphaNodes) +
       " && WhiteAlbedoGrid::CosNodes == " + std::to_string(WhiteAlbedoGrid::CosNodes) +
       " && WhiteAlbedoGrid::AlphaMin == " + formatDouble(WhiteAlbedoGrid::AlphaMin) +
       " && WhiteAlbedoGrid::MoebiusScale == " + formatDouble(WhiteAlbedoGrid::MoebiusScale) + ");\n\n";
@@ -83,7 +90,8 @@ std::string whiteAlbedoTableSource(const std::vector<double>& ggx, const std::ve
 
 CLI::App* addGenerateTableCommand(CLI::App& app, GenerateTableOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "generate-table", "Developer command: compute a precomputed table of the models and write it as C++ source");
+      "generate-table",
+      "Developer command: compute a precomputed table of the models and write it as C++ source");
   command->group("");  // hidden from `scatterlab --help`
   command->add_option("table", options.table, "Which table")
       ->required()
@@ -97,11 +105,13 @@ int runGenerateTableCommand(const GenerateTableOptions& options) {
   const std::filesystem::path output(options.output);
   const std::filesystem::path directory = output.has_parent_path() ? output.parent_path() : ".";
   if (!std::filesystem::is_directory(directory))
-    throw InputError("--output: directory \"" + directory.string() + "\" does not exist; allowed: a file in an "
+    throw InputError("--output: directory \"" + directory.string() +
+                     "\" does not exist; allowed: a file in an "
                      "existing directory");
   ProgressLine progress;
   std::atomic<int> done{0};
-  const std::vector<double> ggx = computeWhiteAlbedoTable(MicrofacetType::Ggx, done, progress, "GGX and Beckmann");
+  const std::vector<double> ggx =
+      computeWhiteAlbedoTable(MicrofacetType::Ggx, done, progress, "GGX and Beckmann");
   const std::vector<double> beckmann =
       computeWhiteAlbedoTable(MicrofacetType::Beckmann, done, progress, "GGX and Beckmann");
   progress.clear();

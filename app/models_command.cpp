@@ -23,7 +23,8 @@ std::string formatColumns(const std::vector<TableRow>& rows) {
   std::string out;
   for (const TableRow& row : rows) {
     std::string line = " ";
-    for (size_t c = 0; c < ColumnCount; ++c) line += " " + row[c] + std::string(width[c] - row[c].size() + 1, ' ');
+    for (size_t c = 0; c < ColumnCount; ++c)
+      line += " " + row[c] + std::string(width[c] - row[c].size() + 1, ' ');
     line.erase(line.find_last_not_of(' ') + 1);
     out += line + "\n";
   }

@@ -40,7 +40,8 @@ CLI::Validator numberIn(const ValueRange& range, const std::string& what) {
   return CLI::Validator(
       [range, allowed](std::string& text) -> std::string {
         const auto value = parseWhole<double>(text);
-        if (!value || !std::isfinite(*value)) return inQuotes(text) + " is not a finite number; allowed: " + allowed;
+        if (!value || !std::isfinite(*value))
+          return inQuotes(text) + " is not a finite number; allowed: " + allowed;
         if (!range.contains(*value)) return inQuotes(text) + " is out of range; allowed: " + allowed;
         return "";
       },
@@ -52,7 +53,8 @@ void addSeedAndThreadOptions(CLI::App* command, uint64_t& seed, int& threads, co
       ->type_name("INTEGER")
       ->transform(integerIn(0))
       ->capture_default_str();
-  command->add_option("--threads", threads, "Worker threads of the " + work + ", 0 for all cores (same result)")
+  command
+      ->add_option("--threads", threads, "Worker threads of the " + work + ", 0 for all cores (same result)")
       ->type_name("INTEGER")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
@@ -88,7 +90,8 @@ std::optional<GridSize> parseGrid(const std::string& text) {
 
 CLI::Validator gridValidator() {
   const std::string allowed = "COSxPHI, cos(theta) cells x phi cells, each an integer in [" +
-                              std::to_string(MinGridCells) + ", " + std::to_string(MaxGridCells) + "], e.g. 64x128";
+                              std::to_string(MinGridCells) + ", " + std::to_string(MaxGridCells) +
+                              "], e.g. 64x128";
   return CLI::Validator(
       [allowed](std::string& text) -> std::string {
         return parseGrid(text) ? "" : inQuotes(text) + " is not a valid grid; allowed: " + allowed;
@@ -125,7 +128,8 @@ void checkOutputFile(const std::string& option, const std::string& path, const s
   const std::string allowed = "; allowed: a file path in an existing directory, e.g. " + example;
   if (path.empty()) throw InputError(option + ": missing" + allowed);
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(option + ": " + inQuotes(path) + " is a directory" + allowed);
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(option + ": " + inQuotes(path) + " is a directory" + allowed);
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
   if (!directory.empty() && !std::filesystem::is_directory(directory, error))
     throw InputError(option + ": directory " + inQuotes(directory.string()) + " does not exist" + allowed);

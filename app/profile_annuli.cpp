@@ -13,19 +13,22 @@ double profileExtent(const RadialProfile& profile) {
   return largest > 0 ? largest : 1.0;
 }
 
-std::vector<double> annulusMeans(const RadialProfile& profile, int channel, const std::vector<double>& edges) {
+std::vector<double> annulusMeans(const RadialProfile& profile, int channel,
+                                 const std::vector<double>& edges) {
   std::vector<double> means;
   const double total = profile.totalReflectance()[channel];
   for (size_t k = 0; k + 1 < edges.size(); ++k) {
     const double mass =
-        total > 0 ? total * (profile.radiusCdf(channel, edges[k + 1]) - profile.radiusCdf(channel, edges[k])) : 0.0;
+        total > 0 ? total * (profile.radiusCdf(channel, edges[k + 1]) - profile.radiusCdf(channel, edges[k]))
+                  : 0.0;
     means.push_back(mass / (Pi * (edges[k + 1] * edges[k + 1] - edges[k] * edges[k])));
   }
   return means;
 }
 
-HalfSpaceWalkSettings mediumWalkSettings(const ScatteringMedium& medium, int channel, const std::vector<double>& edges,
-                                         uint64_t paths, uint64_t seed, int threads) {
+HalfSpaceWalkSettings mediumWalkSettings(const ScatteringMedium& medium, int channel,
+                                         const std::vector<double>& edges, uint64_t paths, uint64_t seed,
+                                         int threads) {
   HalfSpaceWalkSettings s;
   s.albedo = medium.albedo()[channel];
   s.extinction = medium.extinction()[channel];

@@ -22,7 +22,8 @@ std::vector<double> annulusMeans(const RadialProfile& profile, int channel, cons
 
 // The walk in `medium`'s channel (its albedo, extinction, g and eta), tallied on `edges`;
 // channel c's paths use the seed deriveSeed(seed, c).
-HalfSpaceWalkSettings mediumWalkSettings(const ScatteringMedium& medium, int channel, const std::vector<double>& edges,
-                                         uint64_t paths, uint64_t seed, int threads);
+HalfSpaceWalkSettings mediumWalkSettings(const ScatteringMedium& medium, int channel,
+                                         const std::vector<double>& edges, uint64_t paths, uint64_t seed,
+                                         int threads);
 
 }  // namespace scatterlab

@@ -58,9 +58,10 @@ struct ChannelWalk {
   std::optional<double> exactTotal;  // index-matched isotropic: Chandrasekhar's H
 };
 
-HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const ScatteringMedium& medium, int channel,
-                                   const std::vector<double>& edges) {
-  HalfSpaceWalkSettings s = mediumWalkSettings(medium, channel, edges, options.paths, options.seed, options.threads);
+HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const ScatteringMedium& medium,
+                                   int channel, const std::vector<double>& edges) {
+  HalfSpaceWalkSettings s =
+      mediumWalkSettings(medium, channel, edges, options.paths, options.seed, options.threads);
   if (!options.albedo.empty()) s.albedo = options.albedo[options.albedo.size() == 3 ? channel : 0];
   s.g = options.g.value_or(s.g);
   s.eta = options.eta.value_or(s.eta);
@@ -69,26 +70,37 @@ HalfSpaceWalkSettings walkSettings(const ProfileCommandOptions& options, const S
 
 void checkWalkOptions(const ProfileCommandOptions& options) {
   if (options.compare) {
-    if (options.reference.empty()) throw InputError("--compare: compares the models with the walk; allowed: only with --reference walk");
-    const char* own = !options.albedo.empty() ? "--albedo" : options.eta ? "--eta" : options.g ? "--g" : nullptr;
+    if (options.reference.empty())
+      throw InputError("--compare: compares the models with the walk; allowed: only with --reference walk");
+    const char* own = !options.albedo.empty() ? "--albedo"
+                      : options.eta           ? "--eta"
+                      : options.g             ? "--g"
+                                              : nullptr;
     if (own)
-      throw InputError(std::string(own) +
-                       ": with --compare the walk and every model share the material's medium; allowed: change the "
-                       "material instead");
+      throw InputError(
+          std::string(own) +
+          ": with --compare the walk and every model share the material's medium; allowed: change the "
+          "material instead");
     const char* grid = options.minRadius ? "--min-radius" : options.maxRadius ? "--max-radius" : nullptr;
     if (grid)
-      throw InputError(std::string(grid) + ": --compare chooses its own annuli (out to twice the widest profile); "
-                                           "allowed: --bins for their number");
+      throw InputError(std::string(grid) +
+                       ": --compare chooses its own annuli (out to twice the widest profile); "
+                       "allowed: --bins for their number");
   }
   if (!options.reference.empty()) {
     if (!options.albedo.empty() && options.albedo.size() != 1 && options.albedo.size() != 3)
-      throw InputError("--albedo: " + std::to_string(options.albedo.size()) +
-                       " values given; allowed: one albedo for every channel, or three (r,g,b), each in [0, 1]");
+      throw InputError(
+          "--albedo: " + std::to_string(options.albedo.size()) +
+          " values given; allowed: one albedo for every channel, or three (r,g,b), each in [0, 1]");
     return;
   }
-  const char* walkOnly = !options.albedo.empty() ? "--albedo" : options.eta ? "--eta" : options.g ? "--g" : nullptr;
+  const char* walkOnly = !options.albedo.empty() ? "--albedo"
+                         : options.eta           ? "--eta"
+                         : options.g             ? "--g"
+                                                 : nullptr;
   if (walkOnly)
-    throw InputError(std::string(walkOnly) + ": sets the random walk's medium; allowed: only with --reference walk");
+    throw InputError(std::string(walkOnly) +
+                     ": sets the random walk's medium; allowed: only with --reference walk");
 }
 
 std::string fixed(const char* format, double value) {
@@ -98,20 +110,25 @@ std::string fixed(const char* format, double value) {
 }
 
 void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
-               const std::vector<std::vector<double>>& means, const std::vector<std::optional<ChannelWalk>>& walks) {
+               const std::vector<std::vector<double>>& means,
+               const std::vector<std::optional<ChannelWalk>>& walks) {
   const RadialProfile& profile = *loaded.material.profile;
   std::cout << "material (every default filled in): " << loaded.completed.dump() << "\n";
-  std::cout << "profile " << profile.name() << ", eta " << loaded.material.medium.eta << "; lengths in mm, R in mm^-2\n\n";
+  std::cout << "profile " << profile.name() << ", eta " << loaded.material.medium.eta
+            << "; lengths in mm, R in mm^-2\n\n";
   std::cout << "channel  total diffuse reflectance";
   if (walks[0]) std::cout << "   random walk (+- standard error)";
   std::cout << "\n";
   for (int c = 0; c < 3; ++c) {
-    std::cout << "  " << ChannelNames[c] << "      " << fixed(walks[0] ? "%-26.6f" : "%.6f", profile.totalReflectance()[c]);
+    std::cout << "  " << ChannelNames[c] << "      "
+              << fixed(walks[0] ? "%-26.6f" : "%.6f", profile.totalReflectance()[c]);
     if (const auto& walk = walks[size_t(c)]) {
-      std::cout << fixed("%.6f", walk->result.totalReflectance) << " +- " << fixed("%.6f", walk->result.totalStdError)
-                << "  (albedo " << fixed("%.6g", walk->result.settings.albedo) << ", " << walk->result.settings.paths
+      std::cout << fixed("%.6f", walk->result.totalReflectance) << " +- "
+                << fixed("%.6f", walk->result.totalStdError) << "  (albedo "
+                << fixed("%.6g", walk->result.settings.albedo) << ", " << walk->result.settings.paths
                 << " paths";
-      if (walk->exactTotal) std::cout << "; exact " << fixed("%.6f", *walk->exactTotal) << " by Chandrasekhar's H";
+      if (walk->exactTotal)
+        std::cout << "; exact " << fixed("%.6f", *walk->exactTotal) << " by Chandrasekhar's H";
       std::cout << ")";
     }
     std::cout << "\n";
@@ -128,7 +145,8 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
     for (int c = 0; c < 3; ++c) {
       line += " " + fixed("%-12.5e", means[size_t(c)][k]);
       if (const auto& walk = walks[size_t(c)])
-        line += " " + fixed("%-12.5e", walk->result.profile[k]) + " " + fixed("%-12.3e", walk->result.profileStdError[k]);
+        line += " " + fixed("%-12.5e", walk->result.profile[k]) + " " +
+                fixed("%-12.3e", walk->result.profileStdError[k]);
     }
     line.erase(line.find_last_not_of(' ') + 1);
     std::cout << line << "\n";
@@ -168,20 +186,23 @@ void printComparison(const LoadedMaterial& loaded, const ProfileComparison& comp
   const ScatteringMedium& m = comparison.medium;
   std::cout << "material (every default filled in): " << loaded.completed.dump() << "\n";
   std::cout << "medium: sigma_s " << fixed("%.4g", m.sigmaS.x) << " " << fixed("%.4g", m.sigmaS.y) << " "
-            << fixed("%.4g", m.sigmaS.z) << ", sigma_a " << fixed("%.4g", m.sigmaA.x) << " " << fixed("%.4g", m.sigmaA.y)
-            << " " << fixed("%.4g", m.sigmaA.z) << " mm^-1, g " << m.g << ", eta " << m.eta << "\n";
+            << fixed("%.4g", m.sigmaS.z) << ", sigma_a " << fixed("%.4g", m.sigmaA.x) << " "
+            << fixed("%.4g", m.sigmaA.y) << " " << fixed("%.4g", m.sigmaA.z) << " mm^-1, g " << m.g
+            << ", eta " << m.eta << "\n";
   std::cout << "walk: " << comparison.walks[0].settings.paths
             << " paths per channel, normal incidence; profile errors on " << comparison.edges.size() - 1
             << " annuli to " << fixed("%.4g", comparison.edges.back()) << " mm plus the power beyond\n\n";
-  std::cout << "channel  albedo     walk total          single scattering   multiple only       noise floor\n";
+  std::cout
+      << "channel  albedo     walk total          single scattering   multiple only       noise floor\n";
   for (int c = 0; c < 3; ++c) {
     const HalfSpaceWalkResult& w = comparison.walks[size_t(c)];
     std::cout << "  " << ChannelNames[c] << "      " << fixed("%-10.6g", w.settings.albedo) << " "
-              << fixed("%.4f", comparison.walkTotal[c]) << " +- " << fixed("%-8.4f", comparison.walkStdError[c]) << " "
-              << fixed("%.4f", w.singleReflectance) << " +- " << fixed("%-8.4f", w.singleStdError) << " "
+              << fixed("%.4f", comparison.walkTotal[c]) << " +- "
+              << fixed("%-8.4f", comparison.walkStdError[c]) << " " << fixed("%.4f", w.singleReflectance)
+              << " +- " << fixed("%-8.4f", w.singleStdError) << " "
               << fixed("%.4f", comparison.walkMultipleTotal[c]) << " +- "
-              << fixed("%-8.4f", comparison.walkMultipleStdError[c]) << " " << fixed("%.3f", comparison.noiseFloor[c])
-              << "\n";
+              << fixed("%-8.4f", comparison.walkMultipleStdError[c]) << " "
+              << fixed("%.3f", comparison.noiseFloor[c]) << "\n";
   }
   std::cout << "\nagainst the walk (relative errors): total diffuse reflectance, and R(r) weighted by r\n"
             << "model           ch  total     all orders: total  R(r)    multiple only: total  R(r)\n";
@@ -190,8 +211,8 @@ void printComparison(const LoadedMaterial& loaded, const ProfileComparison& comp
     for (int c = 0; c < 3; ++c)
       std::cout << column(c == 0 ? toString(model.model) : "", -16) << ChannelNames[c] << "   "
                 << fixed("%-9.4f", e.total[c]) << " " << column(percent(e.totalError[c]), 18) << "  "
-                << fixed("%6.1f%%", 100.0 * e.profileError[c]) << " " << column(percent(e.multipleTotalError[c]), 21)
-                << "  "
+                << fixed("%6.1f%%", 100.0 * e.profileError[c]) << " "
+                << column(percent(e.multipleTotalError[c]), 21) << "  "
                 << fixed("%6.1f%%", 100.0 * e.multipleProfileError[c]) << "\n";
   }
 }
@@ -218,9 +239,11 @@ json comparisonJson(const LoadedMaterial& loaded, const ProfileComparison& compa
                       {"multiple_profile_error", rgbJson(model.errors.multipleProfileError)}});
   return {{"material", loaded.completed},
           {"label", loaded.label},
-          {"medium", {{"sigma_s", rgbJson(m.sigmaS)}, {"sigma_a", rgbJson(m.sigmaA)}, {"g", m.g}, {"eta", m.eta}}},
+          {"medium",
+           {{"sigma_s", rgbJson(m.sigmaS)}, {"sigma_a", rgbJson(m.sigmaA)}, {"g", m.g}, {"eta", m.eta}}},
           {"errors",
-           "relative to the walk: total (model / walk - 1) and R(r) weighted by r (L1 distance of the radial power "
+           "relative to the walk: total (model / walk - 1) and R(r) weighted by r (L1 distance of the radial "
+           "power "
            "distributions over the walk's total), against all orders and against multiple scattering only"},
           {"radius_edges", comparison.edges},
           {"walk",
@@ -255,18 +278,25 @@ int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& lo
 
 CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "profile", "Print a subsurface material's radial profile R(r) and total diffuse reflectance per channel, "
-                 "optionally next to the half-space random walk (--reference walk)");
-  command->add_option("material", options.material, "Subsurface material: inline JSON or a JSON file")->required();
-  command->add_option("--reference", options.reference, "Also run the ground truth: the half-space random walk")
+      "profile",
+      "Print a subsurface material's radial profile R(r) and total diffuse reflectance per channel, "
+      "optionally next to the half-space random walk (--reference walk)");
+  command->add_option("material", options.material, "Subsurface material: inline JSON or a JSON file")
+      ->required();
+  command
+      ->add_option("--reference", options.reference, "Also run the ground truth: the half-space random walk")
       ->check(CLI::IsMember({"walk"}))
       ->type_name("walk");
-  command->add_option("--albedo", options.albedo,
-                      "Walk: single-scattering albedo sigma_s / sigma_t, one value or r,g,b (default: the medium's)")
+  command
+      ->add_option(
+          "--albedo", options.albedo,
+          "Walk: single-scattering albedo sigma_s / sigma_t, one value or r,g,b (default: the medium's)")
       ->delimiter(',')
       ->type_name("ALBEDO")
       ->check(numberIn(ValueRange::closed(0.0, 1.0), "an albedo"));
-  command->add_option("--eta", options.eta, "Walk: boundary index of refraction, 1 = index-matched (default: the material's)")
+  command
+      ->add_option("--eta", options.eta,
+                   "Walk: boundary index of refraction, 1 = index-matched (default: the material's)")
       ->type_name("NUMBER")
       ->check(numberIn(ValueRange{0.0, 4.0, true, false}, "an index of refraction"));
   command->add_option("--g", options.g, "Walk: Henyey-Greenstein mean cosine (default: the material's)")
@@ -276,11 +306,15 @@ CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
       ->type_name("INTEGER")
       ->transform(integerIn(1000, MaxPaths))
       ->capture_default_str();
-  command->add_option("--min-radius", options.minRadius, "Outer radius of the first annulus, mm (default: max / 1000)")
+  command
+      ->add_option("--min-radius", options.minRadius,
+                   "Outer radius of the first annulus, mm (default: max / 1000)")
       ->type_name("MM")
       ->check(numberIn(ValueRange::above(0.0), "a radius in mm"));
-  command->add_option("--max-radius", options.maxRadius,
-                      "Outer radius of the last annulus, mm (default: where every channel holds 99.9% of its profile)")
+  command
+      ->add_option(
+          "--max-radius", options.maxRadius,
+          "Outer radius of the last annulus, mm (default: where every channel holds 99.9% of its profile)")
       ->type_name("MM")
       ->check(numberIn(ValueRange::above(0.0), "a radius in mm"));
   command->add_option("--bins", options.bins, "Annuli after the first (log-spaced)")
@@ -288,9 +322,10 @@ CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
   addSeedAndThreadOptions(command, options.seed, options.threads, "walk");
-  command->add_flag("--compare", options.compare,
-                    "With --reference walk: every profile model (dipole, better-dipole, beam-diffusion, burley) on the "
-                    "material's medium against the walk, in one table of relative errors");
+  command->add_flag(
+      "--compare", options.compare,
+      "With --reference walk: every profile model (dipole, better-dipole, beam-diffusion, burley) on the "
+      "material's medium against the walk, in one table of relative errors");
   command->add_flag("--json", options.json, "Print one JSON document");
   return command;
 }
@@ -309,8 +344,9 @@ int runProfileCommand(const ProfileCommandOptions& options) {
     ProgressLine progress;
     for (int c = 0; c < 3; ++c) {
       const HalfSpaceWalkSettings settings = walkSettings(options, loaded.material.medium, c, edges);
-      ChannelWalk walk{simulateHalfSpace(settings, progress.walkCallback(std::string("walk ") + ChannelNames[c])),
-                       std::nullopt};
+      ChannelWalk walk{
+          simulateHalfSpace(settings, progress.walkCallback(std::string("walk ") + ChannelNames[c])),
+          std::nullopt};
       if (settings.eta == 1.0 && settings.g == 0.0 && settings.incidentCosTheta == 1.0)
         walk.exactTotal = ChandrasekharH(settings.albedo).directionalAlbedo(1.0);
       walks[size_t(c)] = std::move(walk);
@@ -330,15 +366,17 @@ int runProfileCommand(const ProfileCommandOptions& options) {
     channels.push_back(std::move(channel));
   }
   const ScatteringMedium& m = loaded.material.medium;
-  const json document{
-      {"material", loaded.completed},
-      {"label", loaded.label},
-      {"profile_model", profile.name()},
-      {"medium",
-       {{"sigma_s", {m.sigmaS.x, m.sigmaS.y, m.sigmaS.z}}, {"sigma_a", {m.sigmaA.x, m.sigmaA.y, m.sigmaA.z}}, {"g", m.g}, {"eta", m.eta}}},
-      {"units", "lengths mm, coefficients mm^-1, R mm^-2 (averaged over each annulus)"},
-      {"radius_edges", edges},
-      {"channels", std::move(channels)}};
+  const json document{{"material", loaded.completed},
+                      {"label", loaded.label},
+                      {"profile_model", profile.name()},
+                      {"medium",
+                       {{"sigma_s", {m.sigmaS.x, m.sigmaS.y, m.sigmaS.z}},
+                        {"sigma_a", {m.sigmaA.x, m.sigmaA.y, m.sigmaA.z}},
+                        {"g", m.g},
+                        {"eta", m.eta}}},
+                      {"units", "lengths mm, coefficients mm^-1, R mm^-2 (averaged over each annulus)"},
+                      {"radius_edges", edges},
+                      {"channels", std::move(channels)}};
   std::cout << document.dump(2) << "\n";
   return static_cast<int>(ExitCode::Success);
 }

@@ -15,16 +15,16 @@
 namespace scatterlab {
 
 struct ProfileCommandOptions {
-  std::string material;             // inline JSON or a file
-  std::string reference;            // "" or "walk"
-  std::vector<double> albedo;       // walk: single-scattering albedo, 1 or 3 values (default: the medium's)
-  std::optional<double> eta, g;     // walk: boundary index and HG g (default: the material's)
-  uint64_t paths = 1'000'000;       // walk: paths per channel
+  std::string material;          // inline JSON or a file
+  std::string reference;         // "" or "walk"
+  std::vector<double> albedo;    // walk: single-scattering albedo, 1 or 3 values (default: the medium's)
+  std::optional<double> eta, g;  // walk: boundary index and HG g (default: the material's)
+  uint64_t paths = 1'000'000;    // walk: paths per channel
   std::optional<double> minRadius, maxRadius;  // mm; default: from the profile
   int bins = 24;
   uint64_t seed = 1;
   int threads = 0;
-  bool compare = false;             // every model against the walk (needs --reference walk)
+  bool compare = false;  // every model against the walk (needs --reference walk)
   bool json = false;
 };
 

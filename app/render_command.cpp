@@ -16,10 +16,10 @@
 #include "integrator/contact_sheet.h"
 #include "integrator/environment_map_file.h"
 #include "integrator/exr_io.h"
+#include "integrator/material_scene.h"
 #include "integrator/png_io.h"
 #include "integrator/render.h"
 #include "integrator/render_error.h"
-#include "integrator/material_scene.h"
 #include "integrator/scene_presets.h"
 #include "integrator/silhouette_mask.h"
 #include "materials/bsdf/registry.h"
@@ -42,13 +42,16 @@ std::optional<int> parsePositive(const std::string& text) {
   return value;
 }
 
-const std::string ResolutionAllowed = "WxH (or N for N x N), each side in [1, " + std::to_string(MaxImageSide) +
-                                      "] and at most " + std::to_string(MaxImagePixels) + " pixels, e.g. 256x256";
+const std::string ResolutionAllowed = "WxH (or N for N x N), each side in [1, " +
+                                      std::to_string(MaxImageSide) + "] and at most " +
+                                      std::to_string(MaxImagePixels) + " pixels, e.g. 256x256";
 
 CLI::Validator resolutionValidator() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        return parseResolution(text) ? "" : inQuotes(text) + " is not a valid resolution; allowed: " + ResolutionAllowed;
+        return parseResolution(text)
+                   ? ""
+                   : inQuotes(text) + " is not a valid resolution; allowed: " + ResolutionAllowed;
       },
       "WxH");
 }
@@ -81,7 +84,8 @@ struct LoadedEnvironment {
 
 LoadedEnvironment loadEnvironment(const RenderCommandOptions& options) {
   const Transform rotation = Transform::rotate(options.envRotateDegrees, Vec3d(0, 0, 1));
-  if (options.env == "white") return {Environment::constant(Rgb(options.envStrength)), {{"type", "constant"}}};
+  if (options.env == "white")
+    return {Environment::constant(Rgb(options.envStrength)), {{"type", "constant"}}};
   try {
     EnvironmentMapFile file = readEnvironmentMap(options.env);
     const json description{{"type", "map"},
@@ -113,7 +117,8 @@ OutputPaths checkOutput(const std::string& prefix) {
   checkOutputFile("--out", paths.png.string(), "out/gold (for out/gold.exr and out/gold.png)");
   const fs::path directory = paths.exr.parent_path().empty() ? fs::path(".") : paths.exr.parent_path();
   if (::access(directory.c_str(), W_OK) != 0)
-    throw InputError("--out: directory " + inQuotes(directory.string()) + " is not writable; allowed: a writable directory");
+    throw InputError("--out: directory " + inQuotes(directory.string()) +
+                     " is not writable; allowed: a writable directory");
   return paths;
 }
 
@@ -135,7 +140,8 @@ std::string progressBar(double fraction) {
 }
 
 // Writes both files or neither: the PNG's failure removes the EXR just written.
-void writeBoth(const OutputPaths& paths, const std::vector<ExrLayer>& layers, const Image& color, double exposure) {
+void writeBoth(const OutputPaths& paths, const std::vector<ExrLayer>& layers, const Image& color,
+               double exposure) {
   try {
     writeExr(paths.exr, layers);
     try {
@@ -164,24 +170,31 @@ std::optional<Resolution> parseResolution(const std::string& text) {
 
 CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "render", "Path-trace material spheres: PREFIX.exr (linear float) and PREFIX.png (sRGB); two or more "
-                "materials make a labelled contact sheet (gallery)");
-  command->add_option("material", options.materials, "Material(s): inline JSON or JSON files; several: a gallery")
+      "render",
+      "Path-trace material spheres: PREFIX.exr (linear float) and PREFIX.png (sRGB); two or more "
+      "materials make a labelled contact sheet (gallery)");
+  command
+      ->add_option("material", options.materials,
+                   "Material(s): inline JSON or JSON files; several: a gallery")
       ->required();
-  command->add_option("--scene", options.scene, "Built-in scene: sphere (the peers' material sphere) or preview "
-                                                "(on a checkered ground)")
+  command
+      ->add_option("--scene", options.scene,
+                   "Built-in scene: sphere (the peers' material sphere) or preview "
+                   "(on a checkered ground)")
       ->check(choiceOf(scenePresetNames(), "a scene"))
       ->capture_default_str();
-  command->add_option("--env", options.env,
-                      "Environment: white (constant radiance 1, the furnace) or an equirectangular OpenEXR map "
-                      "(width = 2 x height; column u looks along phi = pi - 2 pi u, as Cycles)")
+  command
+      ->add_option("--env", options.env,
+                   "Environment: white (constant radiance 1, the furnace) or an equirectangular OpenEXR map "
+                   "(width = 2 x height; column u looks along phi = pi - 2 pi u, as Cycles)")
       ->type_name("FILE|white")
       ->capture_default_str();
   command->add_option("--env-strength", options.envStrength, "Environment radiance scale")
       ->type_name("S")
       ->check(numberIn(ValueRange::closed(0.0, 1e6)))
       ->capture_default_str();
-  command->add_option("--env-rotate", options.envRotateDegrees, "Turn the environment about +Z by DEG degrees")
+  command
+      ->add_option("--env-rotate", options.envRotateDegrees, "Turn the environment about +Z by DEG degrees")
       ->type_name("DEG")
       ->check(numberIn(ValueRange::closed(-360.0, 360.0), "degrees"))
       ->capture_default_str();
@@ -193,7 +206,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->type_name("WxH")
       ->check(resolutionValidator())
       ->capture_default_str();
-  command->add_option("--threads", options.threads, "Worker threads (0: all cores); the image does not depend on it")
+  command
+      ->add_option("--threads", options.threads,
+                   "Worker threads (0: all cores); the image does not depend on it")
       ->type_name("N")
       ->transform(integerIn(0, 1024))
       ->capture_default_str();
@@ -205,27 +220,35 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->type_name("N")
       ->transform(integerIn(0, MaxPathDepth))
       ->capture_default_str();
-  command->add_option("--estimator", options.estimator,
-                      "mis (NEE + BSDF sampling, power heuristic), bsdf (BSDF sampling only) or light (light "
-                      "sampling only for direct light): for checking that they agree")
+  command
+      ->add_option("--estimator", options.estimator,
+                   "mis (NEE + BSDF sampling, power heuristic), bsdf (BSDF sampling only) or light (light "
+                   "sampling only for direct light): for checking that they agree")
       ->check(choiceOf({"mis", "bsdf", "light"}, "an estimator"))
       ->capture_default_str();
-  command->add_option("--subsurface", options.subsurface,
-                      "How subsurface materials render: diffusion (the BSSRDF's profile, probe-ray exit points) or "
-                      "walk (brute-force volumetric random walk inside the sphere, the reference)")
+  command
+      ->add_option(
+          "--subsurface", options.subsurface,
+          "How subsurface materials render: diffusion (the BSSRDF's profile, probe-ray exit points) or "
+          "walk (brute-force volumetric random walk inside the sphere, the reference)")
       ->check(choiceOf(subsurfaceModeNames(), "a subsurface mode"))
       ->capture_default_str();
-  command->add_option("--filter", options.filter, "Pixel filter: box (1 pixel) or gaussian (sigma 0.5, radius 1.5 px)")
+  command
+      ->add_option("--filter", options.filter,
+                   "Pixel filter: box (1 pixel) or gaussian (sigma 0.5, radius 1.5 px)")
       ->check(choiceOf({"box", "gaussian"}, "a filter"))
       ->capture_default_str();
   command->add_option("--exposure", options.exposure, "PNG exposure in stops (x 2^EV before sRGB encoding)")
       ->type_name("EV")
       ->check(numberIn(ValueRange::closed(-30.0, 30.0), "stops"))
       ->capture_default_str();
-  command->add_option("--layers", options.layers, "Extra EXR layers: albedo, normal, variance (single material only)")
+  command
+      ->add_option("--layers", options.layers,
+                   "Extra EXR layers: albedo, normal, variance (single material only)")
       ->delimiter(',')
       ->check(choiceOf({"albedo", "normal", "variance"}, "a layer"));
-  command->add_option("--label", options.labels, "Gallery label per material, in order (default: file name or type)");
+  command->add_option("--label", options.labels,
+                      "Gallery label per material, in order (default: file name or type)");
   command->add_option("--columns", options.columns, "Gallery columns (0: a square-ish grid)")
       ->type_name("N")
       ->transform(integerIn(0, 1024))
@@ -233,19 +256,23 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
   command->add_option("--out", options.out, "Output prefix: writes PREFIX.exr and PREFIX.png")
       ->type_name("PREFIX")
       ->required();
-  command->add_flag("--json", options.json, "Print the run (settings, timings, sphere and background means) as JSON");
+  command->add_flag("--json", options.json,
+                    "Print the run (settings, timings, sphere and background means) as JSON");
   return command;
 }
 
 int runRenderCommand(const RenderCommandOptions& options) {
   // ---- Every input first: nothing is rendered or written unless all of it is valid.
   const auto resolution = parseResolution(options.resolution);
-  if (!resolution) throw InputError("--res: " + inQuotes(options.resolution) + " is not valid; allowed: " + ResolutionAllowed);
+  if (!resolution)
+    throw InputError("--res: " + inQuotes(options.resolution) +
+                     " is not valid; allowed: " + ResolutionAllowed);
   const ScenePreset preset = *findScenePreset(options.scene);
   const bool gallery = options.materials.size() > 1;
   if (!options.labels.empty() && options.labels.size() != options.materials.size())
     throw InputError("--label: " + std::to_string(options.labels.size()) + " labels for " +
-                     std::to_string(options.materials.size()) + " materials; allowed: one label per material");
+                     std::to_string(options.materials.size()) +
+                     " materials; allowed: one label per material");
   if (gallery && !options.layers.empty())
     throw InputError("--layers: only with a single material; a gallery writes the colour sheet alone");
   std::vector<MaterialToRender> materials;
@@ -281,7 +308,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
       MaterialToRender& material = materials[i];
       const Scene scene = makeMaterialScene(preset, std::move(material.material), subsurfaceMode, environment,
                                             resolution->width, resolution->height);
-      const std::string step = gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
+      const std::string step =
+          gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
       const ProgressCallback report = progress.callback("render " + step + material.label);
       RenderResult result = render(scene, settings, [&](double fraction) {
         if (report) report(progressBar(fraction), fraction);
@@ -344,14 +372,15 @@ int runRenderCommand(const RenderCommandOptions& options) {
     return static_cast<int>(ExitCode::Success);
   }
   for (const json& run : runs) {
-    std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height << ", "
-              << options.spp << " spp, " << run["seconds"].get<double>() << " s, "
+    std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height
+              << ", " << options.spp << " spp, " << run["seconds"].get<double>() << " s, "
               << run["vertices_per_second"].get<double>() / 1e6 << " M path vertices/s";
     if (run.contains("sphere"))
       std::cout << ", sphere mean " << run["sphere"]["mean"].get<double>() << ", background mean "
                 << run["background"]["mean"].get<double>();
     if (run["non_finite_samples"].get<uint64_t>() > 0)
-      std::cout << ", WARNING: " << run["non_finite_samples"].get<uint64_t>() << " non-finite samples dropped";
+      std::cout << ", WARNING: " << run["non_finite_samples"].get<uint64_t>()
+                << " non-finite samples dropped";
     std::cout << "\n";
   }
   std::cout << "wrote " << paths.exr.string() << " and " << paths.png.string() << "\n";

@@ -1,7 +1,7 @@
 #include "app/shape_factor_command.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -21,18 +21,21 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* Metric =
-    "least squares of r R(r) over radius (annulus averages; Burley's exact from its CDF), the curve's power P "
+    "least squares of r R(r) over radius (annulus averages; Burley's exact from its CDF), the curve's power "
+    "P "
     "free (shape) or held at A (normalised)";
 
 void printTable(const ShapeFactorCommandOptions& options, const std::vector<fitting::BurleyShapeFit>& fits) {
-  std::printf("Burley's searchlight shape factor fitted to the half-space random walk: normal incidence, mean free\n"
-              "path 1, g 0, index-matched, %llu paths per albedo; metric: %s;\n"
-              "annuli of %g mfp. Errors: r-weighted relative error of R(r) at power A against the walk (L1 of the\n"
-              "radial power over %d log-spaced annuli, relative to the walk's total) with the shape, normalised and\n"
-              "published s; noise: what the walk's noise alone adds to them.\n\n",
-              static_cast<unsigned long long>(options.paths), Metric, options.annulusWidth, fitting::ErrorAnnuli);
-  std::printf("A      walk albedo c   walk total          shape s            power P   published s  difference  "
-              "normalised s       difference  errors: shape normalised published  noise\n");
+  std::printf(
+      "Burley's searchlight shape factor fitted to the half-space random walk: normal incidence, mean free\n"
+      "path 1, g 0, index-matched, %llu paths per albedo; metric: %s;\n"
+      "annuli of %g mfp. Errors: r-weighted relative error of R(r) at power A against the walk (L1 of the\n"
+      "radial power over %d log-spaced annuli, relative to the walk's total) with the shape, normalised and\n"
+      "published s; noise: what the walk's noise alone adds to them.\n\n",
+      static_cast<unsigned long long>(options.paths), Metric, options.annulusWidth, fitting::ErrorAnnuli);
+  std::printf(
+      "A      walk albedo c   walk total          shape s            power P   published s  difference  "
+      "normalised s       difference  errors: shape normalised published  noise\n");
   double sumShape = 0.0, sumNormalised = 0.0, maxShape = 0.0;
   for (const fitting::BurleyShapeFit& f : fits) {
     const double shape = f.shapeFactor / f.publishedShapeFactor - 1.0;
@@ -40,16 +43,21 @@ void printTable(const ShapeFactorCommandOptions& options, const std::vector<fitt
     sumShape += std::abs(shape);
     sumNormalised += std::abs(normalised);
     maxShape = std::max(maxShape, std::abs(shape));
-    std::printf("%-6.3g %-15.10f %.5f +- %.5f  %.4f +- %.4f  %.4f    %-12.4f %+9.1f%%  %.4f +- %.4f %+9.1f%%  %13.1f%% "
-                "%9.1f%% %8.1f%%  %4.1f%%\n",
-                f.albedo, f.walkAlbedo, f.walkReflectance, f.walkStdError, f.shapeFactor, f.shapeStdError, f.power,
-                f.publishedShapeFactor, 100.0 * shape, f.normalisedShapeFactor, f.normalisedStdError, 100.0 * normalised,
-                100.0 * f.shapeError, 100.0 * f.normalisedError, 100.0 * f.publishedError, 100.0 * f.errorNoiseFloor);
+    std::printf(
+        "%-6.3g %-15.10f %.5f +- %.5f  %.4f +- %.4f  %.4f    %-12.4f %+9.1f%%  %.4f +- %.4f %+9.1f%%  "
+        "%13.1f%% "
+        "%9.1f%% %8.1f%%  %4.1f%%\n",
+        f.albedo, f.walkAlbedo, f.walkReflectance, f.walkStdError, f.shapeFactor, f.shapeStdError, f.power,
+        f.publishedShapeFactor, 100.0 * shape, f.normalisedShapeFactor, f.normalisedStdError,
+        100.0 * normalised, 100.0 * f.shapeError, 100.0 * f.normalisedError, 100.0 * f.publishedError,
+        100.0 * f.errorNoiseFloor);
   }
   const double n = double(fits.size());
-  std::printf("\nshape s against published: mean |difference| %.1f%%, largest %.1f%%; normalised s: mean |difference| "
-              "%.1f%%\n",
-              100.0 * sumShape / n, 100.0 * maxShape, 100.0 * sumNormalised / n);
+  std::printf(
+      "\nshape s against published: mean |difference| %.1f%%, largest %.1f%%; normalised s: mean "
+      "|difference| "
+      "%.1f%%\n",
+      100.0 * sumShape / n, 100.0 * maxShape, 100.0 * sumNormalised / n);
 }
 
 json tableJson(const ShapeFactorCommandOptions& options, const std::vector<fitting::BurleyShapeFit>& fits) {
@@ -88,8 +96,9 @@ json tableJson(const ShapeFactorCommandOptions& options, const std::vector<fitti
 
 CLI::App* addShapeFactorCommand(CLI::App& app, ShapeFactorCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "shape-factor", "Fit Burley's searchlight shape factor s(A) to half-space random walks over albedos A and print "
-                      "it next to Christensen & Burley's published fit");
+      "shape-factor",
+      "Fit Burley's searchlight shape factor s(A) to half-space random walks over albedos A and print "
+      "it next to Christensen & Burley's published fit");
   command->add_option("--albedos", options.albedos, "Total reflectances A to fit at, each in (0, 1)")
       ->delimiter(',')
       ->type_name("LIST")
@@ -99,7 +108,8 @@ CLI::App* addShapeFactorCommand(CLI::App& app, ShapeFactorCommandOptions& option
       ->type_name("INTEGER")
       ->transform(integerIn(1000, 10'000'000'000))
       ->capture_default_str();
-  command->add_option("--annulus-width", options.annulusWidth, "Width of the walk's annuli, in mean free paths")
+  command
+      ->add_option("--annulus-width", options.annulusWidth, "Width of the walk's annuli, in mean free paths")
       ->type_name("MFP")
       ->check(numberIn(ValueRange::closed(1e-4, 1.0), "a width in mean free paths"))
       ->capture_default_str();
@@ -109,15 +119,17 @@ CLI::App* addShapeFactorCommand(CLI::App& app, ShapeFactorCommandOptions& option
 }
 
 int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
-  if (options.albedos.empty()) throw InputError("--albedos: no albedo given; allowed: a list of values in (0, 1)");
+  if (options.albedos.empty())
+    throw InputError("--albedos: no albedo given; allowed: a list of values in (0, 1)");
   std::vector<fitting::BurleyShapeFit> fits;
   ProgressLine progress;
   for (size_t i = 0; i < options.albedos.size(); ++i) {
     const double albedo = options.albedos[i];
-    HalfSpaceWalkSettings settings =
-        fitting::burleyShapeWalkSettings(albedo, options.paths, deriveSeed(options.seed, i), options.annulusWidth);
+    HalfSpaceWalkSettings settings = fitting::burleyShapeWalkSettings(
+        albedo, options.paths, deriveSeed(options.seed, i), options.annulusWidth);
     settings.threads = options.threads;
-    const HalfSpaceWalkResult walk = simulateHalfSpace(settings, progress.walkCallback("walk at A " + std::to_string(albedo)));
+    const HalfSpaceWalkResult walk =
+        simulateHalfSpace(settings, progress.walkCallback("walk at A " + std::to_string(albedo)));
     fits.push_back(fitting::fitBurleyShapeFactor(walk, albedo));
   }
   progress.clear();

@@ -9,14 +9,14 @@ std::vector<ShowcaseMaterial> showcaseMaterials() {
       // Anisotropy 3:1 and wi off the tangent axes: an axis mix-up cannot pass.
       {"gold-anisotropic-ggx",
        json{{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", {0.3, 0.1}}, {"metal", "Au"}}},
-      {"copper-beckmann-classic",
-       json{{"type", "conductor"},
-            {"distribution", "beckmann"},
-            {"alpha", 0.3},
-            {"metal", "Cu"},
-            {"sampling", "classic"}}},
+      {"copper-beckmann-classic", json{{"type", "conductor"},
+                                       {"distribution", "beckmann"},
+                                       {"alpha", 0.3},
+                                       {"metal", "Cu"},
+                                       {"sampling", "classic"}}},
       // A lobe narrower than a grid cell: the expected counts must come from adaptive quadrature.
-      {"silver-smooth-ggx", json{{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.02}, {"metal", "Ag"}}},
+      {"silver-smooth-ggx",
+       json{{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.02}, {"metal", "Ag"}}},
   };
 }
 

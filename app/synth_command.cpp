@@ -8,10 +8,10 @@
 #include <memory>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
 #include "app/measured_bundle.h"
@@ -68,9 +68,11 @@ GroundTruth fromFit(const PublishedFit& fit, const std::string& source) {
       truth.models.push_back(makeBsdf(component));
     }
   } catch (const MaterialError& error) {
-    throw MaterialError("published fit " + inQuotes(fit.name) + " of " + inQuotes(source) + ": " + error.what());
+    throw MaterialError("published fit " + inQuotes(fit.name) + " of " + inQuotes(source) + ": " +
+                        error.what());
   }
-  truth.description = {{"fit", {{"file", source}, {"name", fit.name}, {"line", fit.line}, {"components", components}}}};
+  truth.description = {
+      {"fit", {{"file", source}, {"name", fit.name}, {"line", fit.line}, {"components", components}}}};
   return truth;
 }
 
@@ -104,8 +106,8 @@ json perturbationJson(const MeasurementPerturbation& p) {
 }
 
 // Synthesises, writes atomically, and returns what --json reports.
-json synthesizeAndWrite(const GroundTruth& truth, const MeasurementPerturbation& perturbation, const fs::path& out,
-                        int threads, ProgressLine& progress, const std::string& step) {
+json synthesizeAndWrite(const GroundTruth& truth, const MeasurementPerturbation& perturbation,
+                        const fs::path& out, int threads, ProgressLine& progress, const std::string& step) {
   const MeasurementSynthesizer synthesizer(truth.components(), perturbation);
   const auto start = std::chrono::steady_clock::now();
   const MerlTable table = synthesizeTable(synthesizer, threads, progress.callback(step + " " + truth.label));
@@ -132,15 +134,17 @@ void printWritten(const json& entry, const std::string& label) {
     return;
   }
   std::cout << "wrote " << entry["file"].get<std::string>() << ": " << label << ", "
-            << entry["missing_cells"].get<size_t>() << " missing cells, " << entry["seconds"].get<double>() << " s\n";
+            << entry["missing_cells"].get<size_t>() << " missing cells, " << entry["seconds"].get<double>()
+            << " s\n";
 }
 
 fs::path bundleDirectory(const std::string& given) {
   if (!given.empty()) return given;
   const auto directory = defaultBundleDirectory();
   if (!directory)
-    throw InputError("--bundle: no directory given and none of SCATTERLAB_CACHE_DIR, XDG_CACHE_HOME, HOME is set; "
-                     "allowed: --bundle DIR");
+    throw InputError(
+        "--bundle: no directory given and none of SCATTERLAB_CACHE_DIR, XDG_CACHE_HOME, HOME is set; "
+        "allowed: --bundle DIR");
   return *directory;
 }
 
@@ -161,7 +165,9 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
   for (size_t i = 0; i < bundle.size(); ++i) {
     const BundleMaterial& material = bundle[i];
     const fs::path file = cache.file(material.name);
-    const json source{{"fit_file", BundleFitFile}, {"fit", material.fitLine}, {"perturbation", perturbationJson(perturbation)}};
+    const json source{{"fit_file", BundleFitFile},
+                      {"fit", material.fitLine},
+                      {"perturbation", perturbationJson(perturbation)}};
     json entry;
     if (!options.force && cache.holds(material.name, source)) {
       entry = {{"file", file.string()}, {"cached", true}};
@@ -179,7 +185,10 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
     written.push_back(std::move(entry));
   }
   if (options.json)
-    std::cout << json{{"bundle", directory.string()}, {"manifest", cache.manifestPath().string()}, {"written", written}}.dump(2)
+    std::cout << json{{"bundle", directory.string()},
+                      {"manifest", cache.manifestPath().string()},
+                      {"written", written}}
+                     .dump(2)
               << "\n";
   else
     std::cout << "bundle: " << directory.string() << " (" << bundle.size() << " materials, manifest "
@@ -189,36 +198,43 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
 
 }  // namespace
 
-MerlTable synthesizeTable(const MeasurementSynthesizer& synthesizer, int threads, const ProgressCallback& progress) {
+MerlTable synthesizeTable(const MeasurementSynthesizer& synthesizer, int threads,
+                          const ProgressCallback& progress) {
   MerlTable table;
   std::atomic<int> done{0};
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     // One theta_h cell (16,200 table cells) per task: cells near the pole cost the same as
     // the others, so equal chunks balance.
-    tbb::parallel_for(tbb::blocked_range<int>(0, merl::ThetaHalfCells, 1), [&](const tbb::blocked_range<int>& range) {
-      synthesizer.fillThetaHalfCells(range.begin(), range.end(), table);
-      const int finished = done += range.size();
-      if (progress) progress("synthesising", double(finished) / merl::ThetaHalfCells);
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, merl::ThetaHalfCells, 1),
+                      [&](const tbb::blocked_range<int>& range) {
+                        synthesizer.fillThetaHalfCells(range.begin(), range.end(), table);
+                        const int finished = done += range.size();
+                        if (progress) progress("synthesising", double(finished) / merl::ThetaHalfCells);
+                      });
   });
   return table;
 }
 
 CLI::App* addSynthCommand(CLI::App& app, SynthCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "synth", "Write measured-style MERL tables (.binary) from a material, a published fit or the named bundle, "
-               "optionally perturbed like a measurement");
+      "synth",
+      "Write measured-style MERL tables (.binary) from a material, a published fit or the named bundle, "
+      "optionally perturbed like a measurement");
   command->add_option("material", options.material, "Material to tabulate: inline JSON or a JSON file");
-  command->add_option("--fit", options.fitFile, "Published-fits file (data/published-fits/*.fit); with --name")
+  command
+      ->add_option("--fit", options.fitFile, "Published-fits file (data/published-fits/*.fit); with --name")
       ->type_name("FILE");
   command->add_option("--name", options.fitName, "Material (line) of the --fit file, e.g. alum-bronze")
       ->type_name("MATERIAL");
   command
       ->add_option_function<std::vector<std::string>>(
           "--bundle",
-          [&options](const std::vector<std::string>& values) { options.bundle = values.empty() ? "" : values.front(); },
-          "Generate the named bundle (10 MERL materials from their Ngan Cook-Torrance fits) into DIR, default "
+          [&options](const std::vector<std::string>& values) {
+            options.bundle = values.empty() ? "" : values.front();
+          },
+          "Generate the named bundle (10 MERL materials from their Ngan Cook-Torrance fits) into DIR, "
+          "default "
           "$XDG_CACHE_HOME/scatterlab/merl-bundle; files already there with the same source are kept")
       ->type_name("[DIR]")
       ->expected(0, 1)
@@ -228,25 +244,31 @@ CLI::App* addSynthCommand(CLI::App& app, SynthCommandOptions& options) {
       ->type_name("INTEGER")
       ->transform(integerIn(0))
       ->capture_default_str();
-  command->add_option("--gain-sigma", options.gainSigma, "Per-channel gain error: each channel times exp(S z)")
+  command
+      ->add_option("--gain-sigma", options.gainSigma, "Per-channel gain error: each channel times exp(S z)")
       ->type_name("S")
       ->check(numberIn(ValueRange::closed(0.0, 1.0)))
       ->capture_default_str();
-  command->add_option("--log-noise", options.logNoise,
-                      "Multiplicative log-normal noise per cell and channel, sigma of ln (mean-preserving)")
+  command
+      ->add_option("--log-noise", options.logNoise,
+                   "Multiplicative log-normal noise per cell and channel, sigma of ln (mean-preserving)")
       ->type_name("SIGMA")
       ->check(numberIn(ValueRange::closed(0.0, 2.0)))
       ->capture_default_str();
-  command->add_option("--noise-floor", options.noiseFloor,
-                      "Additive noise of std sqrt(F^2 + F f) (floor plus shot noise), clamped at 0; in 1/sr")
+  command
+      ->add_option("--noise-floor", options.noiseFloor,
+                   "Additive noise of std sqrt(F^2 + F f) (floor plus shot noise), clamped at 0; in 1/sr")
       ->type_name("F")
       ->check(numberIn(ValueRange::closed(0.0, 1000.0)))
       ->capture_default_str();
-  command->add_option("--missing-above", options.missingAboveDeg,
-                      "Mark cells whose wi or wo is further than DEG from the normal as missing (-1)")
+  command
+      ->add_option("--missing-above", options.missingAboveDeg,
+                   "Mark cells whose wi or wo is further than DEG from the normal as missing (-1)")
       ->type_name("DEG")
       ->check(numberIn(ValueRange{0.0, 90.0, true, false}, "degrees"));
-  command->add_option("--threads", options.threads, "Worker threads (0: all cores); the output does not depend on it")
+  command
+      ->add_option("--threads", options.threads,
+                   "Worker threads (0: all cores); the output does not depend on it")
       ->type_name("N")
       ->transform(integerIn(0, 1024))
       ->capture_default_str();
@@ -256,12 +278,15 @@ CLI::App* addSynthCommand(CLI::App& app, SynthCommandOptions& options) {
 }
 
 int runSynthCommand(const SynthCommandOptions& options) {
-  const int sources = int(!options.material.empty()) + int(!options.fitFile.empty()) + int(options.bundle.has_value());
+  const int sources =
+      int(!options.material.empty()) + int(!options.fitFile.empty()) + int(options.bundle.has_value());
   const std::string allowed = "; allowed: one of MATERIAL, --fit FILE --name MATERIAL, or --bundle [DIR]";
   if (sources == 0) throw InputError("synth: nothing to tabulate" + allowed);
   if (sources > 1) throw InputError("synth: more than one source given" + allowed);
-  if (!options.fitFile.empty() && options.fitName.empty()) throw InputError("--fit: needs --name MATERIAL" + allowed);
-  if (options.fitFile.empty() && !options.fitName.empty()) throw InputError("--name: needs --fit FILE" + allowed);
+  if (!options.fitFile.empty() && options.fitName.empty())
+    throw InputError("--fit: needs --name MATERIAL" + allowed);
+  if (options.fitFile.empty() && !options.fitName.empty())
+    throw InputError("--name: needs --fit FILE" + allowed);
   if (options.force && !options.bundle) throw InputError("--force: only applies to --bundle");
   const MeasurementPerturbation perturbation = perturbationOf(options);
   if (options.bundle) {
@@ -269,8 +294,8 @@ int runSynthCommand(const SynthCommandOptions& options) {
     return runBundle(options, perturbation);
   }
   checkOutputFile("--out", options.out, "gold.binary");
-  const GroundTruth truth =
-      options.fitFile.empty() ? fromMaterialArgument(options.material) : fromFitFile(options.fitFile, options.fitName);
+  const GroundTruth truth = options.fitFile.empty() ? fromMaterialArgument(options.material)
+                                                    : fromFitFile(options.fitFile, options.fitName);
   json entry;
   {
     ProgressLine progress;

@@ -20,7 +20,8 @@ json readManifest(const fs::path& path) {
   json manifest = in ? json::parse(in, nullptr, /*allow_exceptions=*/false) : json();
   if (!manifest.is_object() || manifest.value("format", 0) != ManifestFormat) manifest = json::object();
   manifest["format"] = ManifestFormat;
-  if (!manifest.contains("materials") || !manifest["materials"].is_object()) manifest["materials"] = json::object();
+  if (!manifest.contains("materials") || !manifest["materials"].is_object())
+    manifest["materials"] = json::object();
   return manifest;
 }
 
@@ -36,11 +37,13 @@ fs::path TableCache::file(const std::string& name) const { return directory_ / (
 bool TableCache::holds(const std::string& name, const json& source) const {
   const json& recorded = manifest_["materials"].value(name, json::object());
   std::error_code error;
-  return recorded.value("source", json()) == source && fs::file_size(file(name), error) == merl::FileBytes && !error;
+  return recorded.value("source", json()) == source && fs::file_size(file(name), error) == merl::FileBytes &&
+         !error;
 }
 
 void TableCache::record(const std::string& name, const std::string& category, const json& source) {
-  manifest_["materials"][name] = {{"file", file(name).filename().string()}, {"category", category}, {"source", source}};
+  manifest_["materials"][name] = {
+      {"file", file(name).filename().string()}, {"category", category}, {"source", source}};
   writeTextFileAtomically(manifestPath(), manifest_.dump(2) + "\n");
 }
 

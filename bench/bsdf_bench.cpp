@@ -59,12 +59,14 @@ const Inputs& inputs() {
 }
 
 // bothSides: directions over the whole sphere instead of the upper hemisphere.
-template <typename Model> void benchEval(benchmark::State& state, const Model& model, bool bothSides = false) {
+template <typename Model>
+void benchEval(benchmark::State& state, const Model& model, bool bothSides = false) {
   const Inputs& in = inputs();
   const auto& wi = bothSides ? in.wiSphere : in.wi;
   const auto& wo = bothSides ? in.woSphere : in.wo;
   for (auto _ : state)
-    for (int i = 0; i < Batch; ++i) benchmark::DoNotOptimize(model.eval(wi[i], wo[i], TransportMode::Radiance));
+    for (int i = 0; i < Batch; ++i)
+      benchmark::DoNotOptimize(model.eval(wi[i], wo[i], TransportMode::Radiance));
   state.SetItemsProcessed(state.iterations() * Batch);
 }
 template <typename Model> void benchPdf(benchmark::State& state, const Model& model, bool bothSides = false) {
@@ -72,10 +74,12 @@ template <typename Model> void benchPdf(benchmark::State& state, const Model& mo
   const auto& wi = bothSides ? in.wiSphere : in.wi;
   const auto& wo = bothSides ? in.woSphere : in.wo;
   for (auto _ : state)
-    for (int i = 0; i < Batch; ++i) benchmark::DoNotOptimize(model.pdf(wi[i], wo[i], TransportMode::Radiance));
+    for (int i = 0; i < Batch; ++i)
+      benchmark::DoNotOptimize(model.pdf(wi[i], wo[i], TransportMode::Radiance));
   state.SetItemsProcessed(state.iterations() * Batch);
 }
-template <typename Model> void benchSample(benchmark::State& state, const Model& model, bool bothSides = false) {
+template <typename Model>
+void benchSample(benchmark::State& state, const Model& model, bool bothSides = false) {
   const Inputs& in = inputs();
   const auto& wi = bothSides ? in.wiSphere : in.wi;
   for (auto _ : state)
@@ -91,10 +95,10 @@ const LambertianBsdf& lambertian() {
 template <template <typename> class Distribution>
 const MicrofacetConductorBsdf<Distribution<double>>& conductor(MicrofacetSampling sampling) {
   static const MetalIor* gold = findMetal("Au");
-  static const MicrofacetConductorBsdf<Distribution<double>> visible(Distribution<double>(0.3, 0.1), gold->eta, gold->k,
-                                                                     MicrofacetSampling::Visible);
-  static const MicrofacetConductorBsdf<Distribution<double>> classic(Distribution<double>(0.3, 0.1), gold->eta, gold->k,
-                                                                     MicrofacetSampling::Classic);
+  static const MicrofacetConductorBsdf<Distribution<double>> visible(
+      Distribution<double>(0.3, 0.1), gold->eta, gold->k, MicrofacetSampling::Visible);
+  static const MicrofacetConductorBsdf<Distribution<double>> classic(
+      Distribution<double>(0.3, 0.1), gold->eta, gold->k, MicrofacetSampling::Classic);
   return sampling == MicrofacetSampling::Visible ? visible : classic;
 }
 // Kulla-Conty compensated gold: isotropic (the committed table) and anisotropic (the
@@ -103,9 +107,11 @@ template <template <typename> class Distribution>
 const MicrofacetConductorBsdf<Distribution<double>>& compensatedConductor(bool anisotropic) {
   static const MetalIor* gold = findMetal("Au");
   static const MicrofacetConductorBsdf<Distribution<double>> isotropic(
-      Distribution<double>(0.3, 0.3), gold->eta, gold->k, MicrofacetSampling::Visible, MultipleScattering::KullaConty);
-  static const MicrofacetConductorBsdf<Distribution<double>> aniso(
-      Distribution<double>(0.3, 0.1), gold->eta, gold->k, MicrofacetSampling::Visible, MultipleScattering::KullaConty);
+      Distribution<double>(0.3, 0.3), gold->eta, gold->k, MicrofacetSampling::Visible,
+      MultipleScattering::KullaConty);
+  static const MicrofacetConductorBsdf<Distribution<double>> aniso(Distribution<double>(0.3, 0.1), gold->eta,
+                                                                   gold->k, MicrofacetSampling::Visible,
+                                                                   MultipleScattering::KullaConty);
   return anisotropic ? aniso : isotropic;
 }
 
@@ -127,7 +133,8 @@ const BlinnPhongBsdf& blinnPhong() {
   return m;
 }
 const LafortuneBsdf& nganLafortune() {
-  static const LafortuneBsdf m(Rgb(0.0145, 0.0332, 0.064), {{Rgb(0.0238, 0.0164, 0.01), Vec3d(-0.577, -0.577, 0.577), 4060.0}},
+  static const LafortuneBsdf m(Rgb(0.0145, 0.0332, 0.064),
+                               {{Rgb(0.0238, 0.0164, 0.01), Vec3d(-0.577, -0.577, 0.577), 4060.0}},
                                LafortuneNormalization::Ngan);
   return m;
 }
@@ -179,7 +186,8 @@ const ThinDielectricBsdf& thinDielectric() {
   static const ThinDielectricBsdf m(1.5);
   return m;
 }
-template <template <typename> class Distribution> const RoughDielectricBsdf<Distribution<double>>& roughDielectric() {
+template <template <typename> class Distribution>
+const RoughDielectricBsdf<Distribution<double>>& roughDielectric() {
   static const RoughDielectricBsdf<Distribution<double>> m(Distribution<double>(0.3, 0.1), 1.5);
   return m;
 }
@@ -194,16 +202,19 @@ const RoughDielectricBsdf<Distribution<double>>& compensatedRoughDielectric() {
 
 // Rough plastic (the coating's albedo table built once, outside the timing) and blends: a
 // Lambertian with a rough conductor, and a Lambertian with a smooth dielectric (delta lobes).
-template <template <typename> class Distribution> const RoughPlasticBsdf<Distribution<double>>& roughPlastic() {
-  static const RoughPlasticBsdf<Distribution<double>> m(Distribution<double>(0.2, 0.2), Rgb(0.6, 0.3, 0.1), 1.5);
+template <template <typename> class Distribution>
+const RoughPlasticBsdf<Distribution<double>>& roughPlastic() {
+  static const RoughPlasticBsdf<Distribution<double>> m(Distribution<double>(0.2, 0.2), Rgb(0.6, 0.3, 0.1),
+                                                        1.5);
   return m;
 }
 const BlendBsdf& blend(bool delta) {
   static const MetalIor* gold = findMetal("Au");
   static const BlendBsdf glossy(std::make_unique<LambertianBsdf>(Rgb(0.8)),
-                                makeMicrofacetConductor(MicrofacetType::Ggx, 0.3, 0.1, gold->eta, gold->k), Rgb(0.3));
-  static const BlendBsdf glass(std::make_unique<LambertianBsdf>(Rgb(0.8)), std::make_unique<SmoothDielectricBsdf>(1.5),
-                               Rgb(0.5));
+                                makeMicrofacetConductor(MicrofacetType::Ggx, 0.3, 0.1, gold->eta, gold->k),
+                                Rgb(0.3));
+  static const BlendBsdf glass(std::make_unique<LambertianBsdf>(Rgb(0.8)),
+                               std::make_unique<SmoothDielectricBsdf>(1.5), Rgb(0.5));
   return delta ? glass : glossy;
 }
 
@@ -218,13 +229,13 @@ const TabulatedBrdf& measuredChrome() {
   return m;
 }
 
-#define SCATTERLAB_BSDF_BENCHMARKS(name, model)                                          \
-  BENCHMARK_CAPTURE(benchEval, name, model)->Unit(benchmark::kNanosecond);              \
-  BENCHMARK_CAPTURE(benchPdf, name, model)->Unit(benchmark::kNanosecond);               \
+#define SCATTERLAB_BSDF_BENCHMARKS(name, model)                            \
+  BENCHMARK_CAPTURE(benchEval, name, model)->Unit(benchmark::kNanosecond); \
+  BENCHMARK_CAPTURE(benchPdf, name, model)->Unit(benchmark::kNanosecond);  \
   BENCHMARK_CAPTURE(benchSample, name, model)->Unit(benchmark::kNanosecond);
-#define SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(name, model)                               \
-  BENCHMARK_CAPTURE(benchEval, name, model, true)->Unit(benchmark::kNanosecond);        \
-  BENCHMARK_CAPTURE(benchPdf, name, model, true)->Unit(benchmark::kNanosecond);         \
+#define SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(name, model)                       \
+  BENCHMARK_CAPTURE(benchEval, name, model, true)->Unit(benchmark::kNanosecond); \
+  BENCHMARK_CAPTURE(benchPdf, name, model, true)->Unit(benchmark::kNanosecond);  \
   BENCHMARK_CAPTURE(benchSample, name, model, true)->Unit(benchmark::kNanosecond);
 
 SCATTERLAB_BSDF_BENCHMARKS(Lambertian, lambertian())
@@ -241,7 +252,8 @@ SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(SmoothDielectric, smoothDielectric())
 SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(ThinDielectric, thinDielectric())
 SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(RoughDielectricGgx, roughDielectric<GgxDistribution>())
 SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(RoughDielectricBeckmann, roughDielectric<BeckmannDistribution>())
-SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(RoughDielectricGgxKullaConty, compensatedRoughDielectric<GgxDistribution>())
+SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(RoughDielectricGgxKullaConty,
+                                      compensatedRoughDielectric<GgxDistribution>())
 SCATTERLAB_BSDF_BENCHMARKS_BOTH_SIDES(RoughDielectricBeckmannKullaConty,
                                       compensatedRoughDielectric<BeckmannDistribution>())
 SCATTERLAB_BSDF_BENCHMARKS(RoughPlasticGgx, roughPlastic<GgxDistribution>())

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "materials/bssrdf/beam_diffusion_table.h"
-#include "validation/half_space_reference.h"
 #include "materials/bssrdf/measured_media.h"
 #include "materials/bssrdf/probe_sampling.h"
 #include "materials/bssrdf/subsurface_material.h"
 #include "materials/core/rng.h"
+#include "validation/half_space_reference.h"
 
 namespace scatterlab {
 namespace {
@@ -69,7 +69,8 @@ void BM_ProbeSampleAndPdf(benchmark::State& state) {
   const std::vector<double> u = uniforms();
   for (auto _ : state)
     for (int i = 0; i + 2 < Batch; ++i) {
-      const ProbeSegment s = sampler.sample(frame, Vec3d(0.0), u[size_t(i)], {u[size_t(i) + 1], u[size_t(i) + 2]});
+      const ProbeSegment s =
+          sampler.sample(frame, Vec3d(0.0), u[size_t(i)], {u[size_t(i) + 1], u[size_t(i) + 2]});
       benchmark::DoNotOptimize(sampler.pdf(frame, Vec3d(0.0), 0.5 * (s.start + s.end), frame.n));
     }
   state.SetItemsProcessed(state.iterations() * (Batch - 2));
@@ -94,7 +95,12 @@ void BM_WalkPaths(benchmark::State& state) {
   state.counters["events_per_path"] = double(events) / double(state.iterations());
   state.counters["events_per_s"] = benchmark::Counter(double(events), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_WalkPaths)->Args({80000, 100})->Args({99000, 100})->Args({99900, 100})->Args({99000, 130})->Args({99999, 100});
+BENCHMARK(BM_WalkPaths)
+    ->Args({80000, 100})
+    ->Args({99000, 100})
+    ->Args({99900, 100})
+    ->Args({99000, 130})
+    ->Args({99999, 100});
 
 // One photon beam diffusion table (100 albedos x 64 radii; TBB over rows).
 void BM_BeamDiffusionTable(benchmark::State& state) {

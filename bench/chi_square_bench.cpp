@@ -23,7 +23,8 @@ ChiSquareOptions issueOptions() {
   return o;
 }
 
-template <typename Model> void benchChiSquare(benchmark::State& state, const Model& model, double wiThetaDeg) {
+template <typename Model>
+void benchChiSquare(benchmark::State& state, const Model& model, double wiThetaDeg) {
   const ChiSquareOptions o = issueOptions();
   const Vec3d wi = directionFromDegrees(wiThetaDeg, 30);
   bool passed = true;
@@ -37,47 +38,55 @@ template <typename Model> void benchChiSquare(benchmark::State& state, const Mod
 
 void ChiSquareGgxAlpha01Wi60(benchmark::State& state) {
   const MetalIor* gold = findMetal("Au");
-  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta, gold->k);
+  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta,
+                                                               gold->k);
   benchChiSquare(state, model, 60.0);
 }
 void ChiSquareGgxAlpha0001Wi0(benchmark::State& state) {
   const MetalIor* gold = findMetal("Au");
-  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.001, 0.001), gold->eta, gold->k);
+  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.001, 0.001),
+                                                               gold->eta, gold->k);
   benchChiSquare(state, model, 0.0);
 }
 void ChiSquareBeckmannAnisotropicWi85(benchmark::State& state) {
   const MetalIor* gold = findMetal("Au");
-  const MicrofacetConductorBsdf<BeckmannDistribution<double>> model(BeckmannDistribution<double>(0.05, 0.8), gold->eta,
-                                                                    gold->k);
+  const MicrofacetConductorBsdf<BeckmannDistribution<double>> model(BeckmannDistribution<double>(0.05, 0.8),
+                                                                    gold->eta, gold->k);
   benchChiSquare(state, model, 85.0);
 }
-void ChiSquareLambertianWi30(benchmark::State& state) { benchChiSquare(state, LambertianBsdf(Rgb(0.8)), 30.0); }
+void ChiSquareLambertianWi30(benchmark::State& state) {
+  benchChiSquare(state, LambertianBsdf(Rgb(0.8)), 30.0);
+}
 
 // The two halves of the test, to see where the time goes.
 void ChiSquareGgxAlpha01Wi60SamplingOnly(benchmark::State& state) {
   const MetalIor* gold = findMetal("Au");
-  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta, gold->k);
+  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta,
+                                                               gold->k);
   const ChiSquareOptions o = issueOptions();
   const Vec3d wi = directionFromDegrees(60, 30);
   for (auto _ : state)
-    benchmark::DoNotOptimize(drawSamples(o.grid, bsdfDirectionSampler(model, wi), o.sampleCount, o.seed).counts.values[0]);
+    benchmark::DoNotOptimize(
+        drawSamples(o.grid, bsdfDirectionSampler(model, wi), o.sampleCount, o.seed).counts.values[0]);
 }
 void ChiSquareGgxAlpha01Wi60QuadratureOnly(benchmark::State& state) {
   const MetalIor* gold = findMetal("Au");
-  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta, gold->k);
+  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta,
+                                                               gold->k);
   const ChiSquareOptions o = issueOptions();
   const Vec3d wi = directionFromDegrees(60, 30);
   const SampleHistogram h = drawSamples(o.grid, bsdfDirectionSampler(model, wi), o.sampleCount, o.seed);
   for (auto _ : state)
-    benchmark::DoNotOptimize(
-        integrateCells(o.grid, [&](const Vec3d& wo) { return model.pdf(wi, wo, TransportMode::Radiance); }, h.probes,
-                       o.quadrature)[0]);
+    benchmark::DoNotOptimize(integrateCells(
+        o.grid, [&](const Vec3d& wo) { return model.pdf(wi, wo, TransportMode::Radiance); }, h.probes,
+        o.quadrature)[0]);
 }
 
 // The whole per-angle suite (chi-square, consistency, normalisation, albedo) for comparison.
 void FullCheckGgxAlpha01Wi60(benchmark::State& state) {
   const MetalIor* gold = findMetal("Au");
-  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta, gold->k);
+  const MicrofacetConductorBsdf<GgxDistribution<double>> model(GgxDistribution<double>(0.1, 0.1), gold->eta,
+                                                               gold->k);
   BsdfCheckOptions o;
   o.wiThetaDeg = {60};
   o.reciprocityPairs = 0;

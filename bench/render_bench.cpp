@@ -4,7 +4,8 @@
 //   virtual interface against the same call on the concrete `final` type (the renderer's one
 //   dispatch per path vertex), and tracePath for the four materials of the Cycles comparison
 //   in the white furnace and under a map, and subsurface spheres (diffusion and random walk)
-//   under the map, reported as samples and path vertices per second (one thread). bench/cycles_compare.py times whole renders against Blender Cycles.
+//   under the map, reported as samples and path vertices per second (one thread). bench/cycles_compare.py
+//   times whole renders against Blender Cycles.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -58,7 +59,8 @@ void SphereIntersection(benchmark::State& state) {
   std::vector<Ray> rays;
   CounterRng rng(2, 0);
   for (int i = 0; i < Batch; ++i)
-    rays.push_back({Vec3d(0, -4, 0), glm::normalize(Vec3d(0, 4, 0) + sampleUniformSphere(rng.uniform2D()) * 1.5)});
+    rays.push_back(
+        {Vec3d(0, -4, 0), glm::normalize(Vec3d(0, 4, 0) + sampleUniformSphere(rng.uniform2D()) * 1.5)});
   for (auto _ : state)
     for (const Ray& ray : rays) benchmark::DoNotOptimize(sphere.intersect(ray, 0.0, Infinity));
   state.SetItemsProcessed(state.iterations() * Batch);
@@ -112,7 +114,11 @@ BENCHMARK(LambertianSample<false>)->Name("LambertianSample/direct");
 const nlohmann::json& peerMaterial(int index) {
   static const std::vector<nlohmann::json> materials{
       {{"type", "lambertian"}, {"albedo", 1.0}},
-      {{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.09}, {"eta", {1, 1, 1}}, {"k", {1e8, 1e8, 1e8}}},
+      {{"type", "conductor"},
+       {"distribution", "ggx"},
+       {"alpha", 0.09},
+       {"eta", {1, 1, 1}},
+       {"k", {1e8, 1e8, 1e8}}},
       {{"type", "dielectric"}, {"eta", 1.5}},
       {{"type", "rough-dielectric"}, {"distribution", "ggx"}, {"alpha", 0.09}, {"eta", 1.5}}};
   return materials[size_t(index)];
@@ -125,7 +131,8 @@ void traceCameraSamples(benchmark::State& state, const Scene& scene) {
   for (auto _ : state) {
     const uint64_t pixel = (sample * 2654435761u) % (256 * 256);
     SampleStream random(1, pixel, sample++);
-    const Vec2d film = Vec2d(double(pixel % 256) + 0.5, double(pixel / 256) + 0.5) + random.next2D() - Vec2d(0.5);
+    const Vec2d film =
+        Vec2d(double(pixel % 256) + 0.5, double(pixel / 256) + 0.5) + random.next2D() - Vec2d(0.5);
     const PathSample path = tracePath(scene, scene.camera().generateRay(film), random, settings);
     vertices += path.vertices;
     benchmark::DoNotOptimize(path.radiance);
@@ -136,22 +143,22 @@ void traceCameraSamples(benchmark::State& state, const Scene& scene) {
 
 void TracePath(benchmark::State& state) {
   const bool map = state.range(1) != 0;
-  const Scene scene = makePresetScene(ScenePreset::MaterialSphere, makeBsdf(peerMaterial(int(state.range(0)))),
-                                      map ? mapEnvironment() : Environment::constant(Rgb(1.0)), 256, 256);
+  const Scene scene =
+      makePresetScene(ScenePreset::MaterialSphere, makeBsdf(peerMaterial(int(state.range(0)))),
+                      map ? mapEnvironment() : Environment::constant(Rgb(1.0)), 256, 256);
   traceCameraSamples(state, scene);
 }
-BENCHMARK(TracePath)
-    ->ArgNames({"material", "map"})
-    ->ArgsProduct({{0, 1, 2, 3}, {0, 1}});
+BENCHMARK(TracePath)->ArgNames({"material", "map"})->ArgsProduct({{0, 1, 2, 3}, {0, 1}});
 
 // Subsurface spheres of 1 cm (scale 10) under the map: Jensen's Skin1 and Marble (Burley's
 // profile), in diffusion mode and as the random walk (integrator/subsurface.h).
 void TraceSubsurfacePath(benchmark::State& state) {
   const char* medium = state.range(0) == 0 ? "Skin1" : "Marble";
   const SubsurfaceMode mode = state.range(1) == 0 ? SubsurfaceMode::Diffusion : SubsurfaceMode::RandomWalk;
-  const Scene scene = makePresetScene(ScenePreset::MaterialSphere,
-                                      makeSubsurface({{"type", "subsurface"}, {"medium", medium}, {"scale", 10.0}}), mode,
-                                      mapEnvironment(), 256, 256);
+  const Scene scene =
+      makePresetScene(ScenePreset::MaterialSphere,
+                      makeSubsurface({{"type", "subsurface"}, {"medium", medium}, {"scale", 10.0}}), mode,
+                      mapEnvironment(), 256, 256);
   traceCameraSamples(state, scene);
 }
 BENCHMARK(TraceSubsurfacePath)->ArgNames({"marble", "walk"})->ArgsProduct({{0, 1}, {0, 1}});

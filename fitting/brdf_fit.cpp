@@ -8,9 +8,9 @@
 
 #include <ceres/ceres.h>
 
+#include "fitting/ceres_support.h"
 #include "fitting/initialization.h"
 #include "fitting/least_squares.h"
-#include "fitting/ceres_support.h"
 
 namespace scatterlab::fitting {
 
@@ -38,7 +38,8 @@ class IterationProgress final : public ceres::IterationCallback {
 
 // Parameters on a bound whose gradient points out of the box (the cost would fall further
 // past the bound): held for the next Ceres run.
-std::vector<int> blockedByBounds(const FitModel& model, const std::vector<double>& x, const Eigen::VectorXd& gradient) {
+std::vector<int> blockedByBounds(const FitModel& model, const std::vector<double>& x,
+                                 const Eigen::VectorXd& gradient) {
   std::vector<int> blocked;
   for (size_t j = 0; j < x.size(); ++j) {
     const FitParameter& p = model.parameters()[j];
@@ -63,8 +64,8 @@ SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std:
     ceresProblem.SetParameterUpperBound(x.data(), int(j), parameters[j].upper);
   }
   if (!held.empty()) ceresProblem.SetManifold(x.data(), new ceres::SubsetManifold(int(x.size()), held));
-  ceres::Solver::Options solverOptions = denseSolverOptions(maxIterations, options.functionTolerance,
-                                                            options.parameterTolerance, options.gradientTolerance);
+  ceres::Solver::Options solverOptions = denseSolverOptions(
+      maxIterations, options.functionTolerance, options.parameterTolerance, options.gradientTolerance);
   solverOptions.num_threads = 1;  // one residual block; the parallelism is inside it
   IterationProgress callback(options.progress, stage, maxIterations);
   solverOptions.callbacks.push_back(&callback);
@@ -104,7 +105,8 @@ SolveSummary solve(const BrdfLeastSquares& problem, std::vector<double> x, const
       run.message = "every parameter is held on a bound";
       run.converged = true;
     } else {
-      run = solveOnce(cost, model, x, held, std::max(options.maxIterations - out.iterations, 1), options, stage);
+      run = solveOnce(cost, model, x, held, std::max(options.maxIterations - out.iterations, 1), options,
+                      stage);
     }
     if (round == 0) out.initialCost = run.initialCost;
     out.finalCost = run.finalCost;
@@ -136,7 +138,8 @@ NullSpace nullSpaceOf(const Eigen::MatrixXd& hessian, const FitModel& model) {
   for (Eigen::Index j = 0; j < p; ++j) {
     const double d = hessian(j, j);
     scale[j] = d > 0 ? 1.0 / std::sqrt(d) : 0.0;
-    if (!(d > 0)) out.directions.push_back(model.parameters()[size_t(j)].name + " (no influence on the data)");
+    if (!(d > 0))
+      out.directions.push_back(model.parameters()[size_t(j)].name + " (no influence on the data)");
   }
   const Eigen::MatrixXd normalised = scale.asDiagonal() * hessian * scale.asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(normalised);
@@ -252,11 +255,12 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
     const std::string stage = "start " + std::to_string(s + 1) + "/" + std::to_string(starts.size());
     result.starts.push_back(solve(startProblem, starts[s].x, options, stage));
   }
-  const auto best = std::min_element(result.starts.begin(), result.starts.end(), [](const auto& a, const auto& b) {
-    const double ca = std::isfinite(a.finalCost) ? a.finalCost : std::numeric_limits<double>::infinity();
-    const double cb = std::isfinite(b.finalCost) ? b.finalCost : std::numeric_limits<double>::infinity();
-    return ca < cb;
-  });
+  const auto best =
+      std::min_element(result.starts.begin(), result.starts.end(), [](const auto& a, const auto& b) {
+        const double ca = std::isfinite(a.finalCost) ? a.finalCost : std::numeric_limits<double>::infinity();
+        const double cb = std::isfinite(b.finalCost) ? b.finalCost : std::numeric_limits<double>::infinity();
+        return ca < cb;
+      });
 
   // 3. Refinement on every sample.
   const MetricSamples allMetric(samples, options.metric);
@@ -289,8 +293,9 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
     e.upper = fp.upper;
     const double tolerance = 1e-9 * std::max(1.0, std::min(fp.upper - fp.lower, 1e9));
     e.atBound = result.x[j] - fp.lower <= tolerance || fp.upper - result.x[j] <= tolerance;
-    e.standardDeviation = result.covarianceAvailable ? std::sqrt(std::max(0.0, result.covariance(Eigen::Index(j), Eigen::Index(j))))
-                                                     : std::numeric_limits<double>::quiet_NaN();
+    e.standardDeviation = result.covarianceAvailable
+                              ? std::sqrt(std::max(0.0, result.covariance(Eigen::Index(j), Eigen::Index(j))))
+                              : std::numeric_limits<double>::quiet_NaN();
     result.parameters.push_back(e);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();

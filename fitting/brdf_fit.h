@@ -50,7 +50,7 @@ struct FitOptions {
   size_t gridSamples = 20000;    // 0: all samples
   size_t startSamples = 100000;  // 0: all samples (no separate refinement)
   uint64_t seed = 1;
-  int maxIterations = 100;        // per Ceres run (a start, the refinement)
+  int maxIterations = 100;  // per Ceres run (a start, the refinement)
   double functionTolerance = 1e-10;
   double parameterTolerance = 1e-10;
   double gradientTolerance = 1e-14;
@@ -79,17 +79,17 @@ struct ParameterEstimate {
 struct FitResult {
   std::vector<double> x;
   std::vector<ParameterEstimate> parameters;
-  SolveSummary final;             // the refinement on all samples (or the best start)
+  SolveSummary final;  // the refinement on all samples (or the best start)
   std::vector<SolveSummary> starts;
   size_t gridPoints = 0, gridSamples = 0, startSamples = 0, samples = 0;
-  size_t observations = 0;        // N
-  double sigma2 = 0;              // S / (N - p)
-  double robustScale = 0;         // 0 without a robust loss
+  size_t observations = 0;           // N
+  double sigma2 = 0;                 // S / (N - p)
+  double robustScale = 0;            // 0 without a robust loss
   Rgb rms{0.0}, relativeError{0.0};  // per channel, in the metric (header of least_squares.h)
   bool covarianceAvailable = false;
   bool rankDeficient = false;
   std::vector<std::string> unidentified;  // each: the parameters of one null-space direction
-  Eigen::MatrixXd covariance;     // sigma^2 (J^T J)^-1, p x p (empty when not available)
+  Eigen::MatrixXd covariance;             // sigma^2 (J^T J)^-1, p x p (empty when not available)
   double seconds = 0;
 };
 

@@ -3,17 +3,19 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Dense>
 #include <ceres/jet.h>
+#include <Eigen/Dense>
 
 #include "materials/bssrdf/annulus_profile.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
 
 namespace scatterlab::fitting {
 
-HalfSpaceWalkSettings burleyShapeWalkSettings(double albedo, uint64_t paths, uint64_t seed, double annulusWidth) {
+HalfSpaceWalkSettings burleyShapeWalkSettings(double albedo, uint64_t paths, uint64_t seed,
+                                              double annulusWidth) {
   if (!(albedo > 0 && albedo < 1)) throw std::invalid_argument("Burley shape fit: A must be in (0, 1)");
-  if (!(annulusWidth > 0)) throw std::invalid_argument("Burley shape fit: the annulus width must be positive");
+  if (!(annulusWidth > 0))
+    throw std::invalid_argument("Burley shape fit: the annulus width must be positive");
   HalfSpaceWalkSettings s;
   s.albedo = searchlightAlbedoForReflectance(albedo);
   s.extinction = 1.0;
@@ -43,8 +45,9 @@ std::vector<T> annulusMeans(const Profile& profile, const T* p, const std::vecto
 
 // Least squares of r R(r) on the walk's annuli, started at `start`.
 template <typename Profile>
-RadialFitResult fitRadiusWeighted(const Profile& profile, const HalfSpaceWalkResult& walk, std::vector<double> start,
-                                  std::vector<double> lower, std::vector<double> upper) {
+RadialFitResult fitRadiusWeighted(const Profile& profile, const HalfSpaceWalkResult& walk,
+                                  std::vector<double> start, std::vector<double> lower,
+                                  std::vector<double> upper) {
   const std::vector<double>& edges = walk.settings.radiusEdges;
   RadialFitOptions options;
   options.start = std::move(start);
@@ -60,9 +63,9 @@ RadialFitResult fitRadiusWeighted(const Profile& profile, const HalfSpaceWalkRes
 // (sum_k w_k^2 J_k J_k^T)^-1 sum_k w_k^2 J_k e_k for annulus errors e_k with standard errors
 // se_k (their weak multinomial correlation neglected): the sandwich H^-1 M H^-1 with
 // M = sum_k w_k^4 se_k^2 J_k J_k^T. Returns the standard deviations.
-template <typename Profile>
-std::vector<double> walkNoiseStdDeviations(const Profile& profile, const std::vector<double>& parameters,
-                                           const HalfSpaceWalkResult& walk) {
+template <typename Profile> std::vector<double> walkNoiseStdDeviations(const Profile& profile,
+                                                                       const std::vector<double>& parameters,
+                                                                       const HalfSpaceWalkResult& walk) {
   constexpr int K = Profile::ParameterCount;
   using Jet = ceres::Jet<double, K>;
   const std::vector<double>& edges = walk.settings.radiusEdges;
@@ -97,7 +100,8 @@ BurleyShapeFit fitBurleyShapeFactor(const HalfSpaceWalkResult& walk, double albe
   const double length = 1.0 / walk.settings.extinction;
 
   const BurleyPowerAndShapeProfile shape{length};
-  out.shapeFit = fitRadiusWeighted(shape, walk, {albedo, out.publishedShapeFactor}, {0.0, 1e-2}, {2.0, 100.0});
+  out.shapeFit =
+      fitRadiusWeighted(shape, walk, {albedo, out.publishedShapeFactor}, {0.0, 1e-2}, {2.0, 100.0});
   out.power = out.shapeFit.parameters[0];
   out.shapeFactor = out.shapeFit.parameters[1];
   const std::vector<double> shapeNoise = walkNoiseStdDeviations(shape, out.shapeFit.parameters, walk);

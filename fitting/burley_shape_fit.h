@@ -55,11 +55,12 @@ struct BurleyPowerAndShapeProfile {
 // normal incidence, annuli of width `annulusWidth` (mean free paths) out to three times the
 // radius that holds 99.9% of the published fit's profile (the walk's tail is longer than
 // Burley's; what leaves beyond counts in the total only). A in (0, 1).
-HalfSpaceWalkSettings burleyShapeWalkSettings(double albedo, uint64_t paths, uint64_t seed, double annulusWidth = 0.02);
+HalfSpaceWalkSettings burleyShapeWalkSettings(double albedo, uint64_t paths, uint64_t seed,
+                                              double annulusWidth = 0.02);
 
 struct BurleyShapeFit {
-  double albedo = 0.0;            // A: the walk's exact total reflectance
-  double walkAlbedo = 0.0;        // c, the walk's single-scattering albedo
+  double albedo = 0.0;                               // A: the walk's exact total reflectance
+  double walkAlbedo = 0.0;                           // c, the walk's single-scattering albedo
   double walkReflectance = 0.0, walkStdError = 0.0;  // the walk's total (should equal A)
   double publishedShapeFactor = 0.0;                 // 1.85 - A + 7 |A - 0.8|^3
 

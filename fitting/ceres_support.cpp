@@ -6,8 +6,8 @@
 
 namespace scatterlab::fitting {
 
-ceres::Solver::Options denseSolverOptions(int maxIterations, double functionTolerance, double parameterTolerance,
-                                          double gradientTolerance) {
+ceres::Solver::Options denseSolverOptions(int maxIterations, double functionTolerance,
+                                          double parameterTolerance, double gradientTolerance) {
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_QR;
   options.max_num_iterations = maxIterations;

@@ -10,8 +10,8 @@ namespace scatterlab::fitting {
 
 // Levenberg-Marquardt on a dense problem with few parameters (DENSE_QR), silent, with these
 // limits: what every fit of this library runs.
-ceres::Solver::Options denseSolverOptions(int maxIterations, double functionTolerance, double parameterTolerance,
-                                          double gradientTolerance);
+ceres::Solver::Options denseSolverOptions(int maxIterations, double functionTolerance,
+                                          double parameterTolerance, double gradientTolerance);
 
 // "CONVERGENCE", "NO_CONVERGENCE", "FAILURE", ...
 std::string terminationName(ceres::TerminationType type);

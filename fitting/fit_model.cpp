@@ -19,8 +19,8 @@ struct ShapeInfo {
   const char* key;
   int slots = 1;
   GridSpacing spacing = GridSpacing::Linear;
-  bool heldByDefault = false;      // held at its registry default unless given
-  const char* tiedTo = nullptr;    // follows this shape unless either is given
+  bool heldByDefault = false;    // held at its registry default unless given
+  const char* tiedTo = nullptr;  // follows this shape unless either is given
 };
 
 // A linear term: the registry key of its scale ("scale": the blend weight of a model without
@@ -55,7 +55,8 @@ FitKernelVariant eonKernel(const json& completed) {
 
 FitKernelVariant lafortuneKernel(const json& completed) {
   LafortuneKernel k;
-  k.normalization = completed.at("normalization") == "none" ? LafortuneNormalization::None : LafortuneNormalization::Ngan;
+  k.normalization =
+      completed.at("normalization") == "none" ? LafortuneNormalization::None : LafortuneNormalization::Ngan;
   return k;
 }
 
@@ -78,8 +79,13 @@ const std::vector<LobeInfo>& lobeInfos() {
       {"lambertian", {{"albedo"}}, {}, plainKernel<LambertianKernel>},
       {"oren-nayar", {{"albedo"}}, {{"sigma"}}, plainKernel<OrenNayarKernel>},
       {"eon", {}, {{"albedo", 3}, {"roughness"}}, eonKernel, true},
-      {"phong", {{"kd", true}, {"ks"}}, {{"exponent", 1, GridSpacing::Log}}, plainKernel<NormalizedPhongKernel<PhongLobe>>},
-      {"blinn-phong", {{"kd", true}, {"ks"}}, {{"exponent", 1, GridSpacing::Log}},
+      {"phong",
+       {{"kd", true}, {"ks"}},
+       {{"exponent", 1, GridSpacing::Log}},
+       plainKernel<NormalizedPhongKernel<PhongLobe>>},
+      {"blinn-phong",
+       {{"kd", true}, {"ks"}},
+       {{"exponent", 1, GridSpacing::Log}},
        plainKernel<NormalizedPhongKernel<BlinnPhongLobe>>},
       {"lafortune",
        {{"kd", true}, {"ks"}},
@@ -87,11 +93,18 @@ const std::vector<LobeInfo>& lobeInfos() {
        lafortuneKernel},
       {"ward", {{"albedo"}}, {{"alpha", 2, GridSpacing::Log}}, plainKernel<WardKernel>},
       {"ngan-ward", {{"albedo"}}, {{"roughness", 1, GridSpacing::Log}}, plainKernel<NganWardKernel>},
-      {"ashikhmin-shirley", {{"rd", true}}, {{"exponent", 2, GridSpacing::Log}, {"rs", 3}},
-       plainKernel<AshikhminShirleyKernel>, true},
-      {"ngan-ashikhmin-shirley", {{"albedo"}}, {{"fresnelReflectance"}, {"sharpness", 1, GridSpacing::Log}},
+      {"ashikhmin-shirley",
+       {{"rd", true}},
+       {{"exponent", 2, GridSpacing::Log}, {"rs", 3}},
+       plainKernel<AshikhminShirleyKernel>,
+       true},
+      {"ngan-ashikhmin-shirley",
+       {{"albedo"}},
+       {{"fresnelReflectance"}, {"sharpness", 1, GridSpacing::Log}},
        plainKernel<NganAshikhminShirleyKernel>},
-      {"ngan-cook-torrance", {{"albedo"}}, {{"eta"}, {"roughness", 1, GridSpacing::Log}},
+      {"ngan-cook-torrance",
+       {{"albedo"}},
+       {{"eta"}, {"roughness", 1, GridSpacing::Log}},
        plainKernel<NganCookTorranceKernel>},
       {"conductor", {{BlendWeightKey}}, {{"alpha", 2, GridSpacing::Log}}, conductorKernel},
       {"disney",
@@ -124,7 +137,8 @@ std::string refusal(const std::string& type) {
   if (type == "smooth-conductor" || type == "dielectric" || type == "thin-dielectric")
     return "its lobes are delta (mirror) lobes, which have no BRDF values to compare with a table";
   if (type == "rough-dielectric") return "it transmits light, which a reflection table does not constrain";
-  if (type == "rough-plastic") return "its energy coupling reads precomputed albedo tables, which have no derivatives";
+  if (type == "rough-plastic")
+    return "its energy coupling reads precomputed albedo tables, which have no derivatives";
   if (type == "blend") return "sums of models are the fitter's own: give the components joined by '+'";
   if (type == "measured") return "it is a table of data, not a model with parameters";
   return "it is not a model of the registry";
@@ -146,9 +160,12 @@ std::vector<std::string> splitTopLevel(const std::string& spec) {
   bool inString = false, escaped = false;
   for (const char ch : spec) {
     if (inString) {
-      if (escaped) escaped = false;
-      else if (ch == '\\') escaped = true;
-      else if (ch == '"') inString = false;
+      if (escaped)
+        escaped = false;
+      else if (ch == '\\')
+        escaped = true;
+      else if (ch == '"')
+        inString = false;
     } else if (ch == '"') {
       inString = true;
     } else if (ch == '{' || ch == '[') {
@@ -222,16 +239,19 @@ std::vector<json> parseModelSpec(const std::string& spec, int lobes) {
       throw MaterialError("model " + quoted(text) + ": not valid JSON (" + error.what() +
                           "); allowed: an array of material objects, or types joined by '+'");
     }
-    if (array.empty()) throw MaterialError("model " + quoted(text) + ": no components; allowed: " + allowedModels());
+    if (array.empty())
+      throw MaterialError("model " + quoted(text) + ": no components; allowed: " + allowedModels());
     for (const json& part : array) components.push_back(part);
   } else {
-    for (const std::string& part : splitTopLevel(text)) components.push_back(parseComponentText(trimmed(part), text));
+    for (const std::string& part : splitTopLevel(text))
+      components.push_back(parseComponentText(trimmed(part), text));
   }
   for (int i = 1; i < lobes; ++i) components.push_back(components.back());
   return components;
 }
 
-FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape) : perChannelShape_(perChannelShape) {
+FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape)
+    : perChannelShape_(perChannelShape) {
   if (descriptions.empty()) throw MaterialError("model: no components; allowed: " + allowedModels());
   std::map<std::string, int> count, seen;
   for (const json& d : descriptions)
@@ -251,9 +271,10 @@ FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape) 
   for (const FitComponent& comp : components_) {
     const LobeInfo& info = *findLobeInfo(comp.type);
     if (info.hasRest && components_.size() > 1)
-      throw MaterialError("model component " + quoted(comp.label) +
-                          ": a model with no linear scale of its whole value (eon, disney, ashikhmin-shirley) can "
-                          "only be fitted alone; allowed: that model by itself, or models with an albedo joined by '+'");
+      throw MaterialError(
+          "model component " + quoted(comp.label) +
+          ": a model with no linear scale of its whole value (eon, disney, ashikhmin-shirley) can "
+          "only be fitted alone; allowed: that model by itself, or models with an albedo joined by '+'");
   }
 }
 
@@ -265,12 +286,14 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   const LobeInfo* info = findLobeInfo(type);
   if (!info) {
     if (!findMaterialModel(type))
-      throw MaterialError("model component " + quoted(type) + " is not a known model; allowed: " + allowedModels());
+      throw MaterialError("model component " + quoted(type) +
+                          " is not a known model; allowed: " + allowedModels());
     throw MaterialError("model component " + quoted(type) + " cannot be fitted: " + refusal(type) +
                         "; allowed: " + allowedModels());
   }
   json given = description;
-  const bool white = type == "conductor" && !given.contains("metal") && !given.contains("eta") && !given.contains("k");
+  const bool white =
+      type == "conductor" && !given.contains("metal") && !given.contains("eta") && !given.contains("k");
   if (white) {
     // A white conductor (F = 1 to round-off) whose colour and strength are the fitted scale.
     given["eta"] = 1.0;
@@ -305,8 +328,8 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   for (auto& t : comp.termParameter) t.fill(-1);
 
   const size_t componentIndex = components_.size();
-  const auto addParameter = [&](const std::string& key, int channel, ParameterRole role, const ValueRange& range,
-                                double start, GridSpacing spacing) {
+  const auto addParameter = [&](const std::string& key, int channel, ParameterRole role,
+                                const ValueRange& range, double start, GridSpacing spacing) {
     FitParameter p;
     p.name = label + "." + key + (channel >= 0 ? std::string(".") + channelName(channel) : "");
     p.component = componentIndex;
@@ -331,10 +354,12 @@ void FitModel::addComponent(const json& description, const std::string& label, b
       comp.heldTerm[j] = held ? rgbValue(completed[term.key]) : Rgb(0.0);
       continue;
     }
-    const ValueRange range = isBlendWeight ? ValueRange::closed(0.0, 1.0) : registry.findParameter(term.key)->range;
+    const ValueRange range =
+        isBlendWeight ? ValueRange::closed(0.0, 1.0) : registry.findParameter(term.key)->range;
     const Rgb start = isBlendWeight ? Rgb(0.5) : rgbValue(completed[term.key]);
     for (int c = 0; c < 3; ++c)
-      comp.termParameter[j][size_t(c)] = addParameter(term.key, c, ParameterRole::Scale, range, start[c], GridSpacing::Linear);
+      comp.termParameter[j][size_t(c)] =
+          addParameter(term.key, c, ParameterRole::Scale, range, start[c], GridSpacing::Linear);
   }
 
   // Shape parameters: slots in the kernel's order.
@@ -354,7 +379,8 @@ void FitModel::addComponent(const json& description, const std::string& label, b
       continue;
     }
     if (shape.tiedTo && !tieGiven && fittedShape.count(shape.tiedTo)) {
-      for (int e = 0; e < 3; ++e) comp.slotParameter[size_t(e)][size_t(slot)] = fittedShape[shape.tiedTo][size_t(e)];
+      for (int e = 0; e < 3; ++e)
+        comp.slotParameter[size_t(e)][size_t(slot)] = fittedShape[shape.tiedTo][size_t(e)];
       slot += shape.slots;
       continue;
     }
@@ -363,7 +389,8 @@ void FitModel::addComponent(const json& description, const std::string& label, b
     if (shape.slots == 3) {
       // An RGB shape: one parameter per channel, read by every evaluation.
       for (int c = 0; c < 3; ++c) {
-        const int index = addParameter(shape.key, c, ParameterRole::Shape, range, values[size_t(c)], shape.spacing);
+        const int index =
+            addParameter(shape.key, c, ParameterRole::Shape, range, values[size_t(c)], shape.spacing);
         for (int e = 0; e < 3; ++e) comp.slotParameter[size_t(e)][size_t(slot + c)] = index;
       }
       perEvaluation.fill(-1);
@@ -371,12 +398,15 @@ void FitModel::addComponent(const json& description, const std::string& label, b
       if (perChannelShape_) {
         anyPerChannel = true;
         for (int c = 0; c < 3; ++c)
-          perEvaluation[size_t(c)] = addParameter(shape.key, c, ParameterRole::Shape, range, values[0], shape.spacing);
+          perEvaluation[size_t(c)] =
+              addParameter(shape.key, c, ParameterRole::Shape, range, values[0], shape.spacing);
       } else {
-        perEvaluation.fill(addParameter(shape.key, -1, ParameterRole::Shape, range, values[0], shape.spacing));
+        perEvaluation.fill(
+            addParameter(shape.key, -1, ParameterRole::Shape, range, values[0], shape.spacing));
       }
       for (int e = 0; e < 3; ++e)
-        for (int i = 0; i < shape.slots; ++i) comp.slotParameter[size_t(e)][size_t(slot + i)] = perEvaluation[size_t(e)];
+        for (int i = 0; i < shape.slots; ++i)
+          comp.slotParameter[size_t(e)][size_t(slot + i)] = perEvaluation[size_t(e)];
     }
     fittedShape[shape.key] = perEvaluation;
     slot += shape.slots;

@@ -42,10 +42,10 @@ enum class GridSpacing { Linear, Log };
 enum class ParameterRole { Scale, Shape };
 
 struct FitParameter {
-  std::string name;      // "ngan-cook-torrance.roughness", "lambertian.albedo.g"
+  std::string name;  // "ngan-cook-torrance.roughness", "lambertian.albedo.g"
   size_t component = 0;
-  std::string key;       // the registry key ("scale" for a conductor's blend weight)
-  int channel = -1;      // 0..2 for a channel's value, -1 for a value shared by the channels
+  std::string key;   // the registry key ("scale" for a conductor's blend weight)
+  int channel = -1;  // 0..2 for a channel's value, -1 for a value shared by the channels
   ParameterRole role = ParameterRole::Shape;
   double lower = 0, upper = 1;  // from the registry range (an open end nudged inside)
   double start = 0;             // the registry default, clamped to the bounds
@@ -62,11 +62,11 @@ inline constexpr int MaxSlots = 13;
 inline constexpr int MaxTerms = 2;
 
 struct FitComponent {
-  std::string label;          // the type, or "type#k" when the type appears more than once
+  std::string label;  // the type, or "type#k" when the type appears more than once
   std::string type;
-  nlohmann::json description; // the registry material: completed, held values as given
+  nlohmann::json description;  // the registry material: completed, held values as given
   FitKernelVariant kernel;
-  bool perChannel = false;    // shape evaluated once per channel
+  bool perChannel = false;  // shape evaluated once per channel
   // Per evaluation (one, or one per channel) and slot: the parameter index, or -1 (held).
   std::array<std::array<int, MaxSlots>, 3> slotParameter{};
   std::array<double, MaxSlots> heldSlot{};
@@ -124,8 +124,8 @@ class FitModel {
   // Each component's value of its linear terms and of the rest at the shape parameters of
   // x (scales ignored), for the closed-form solve of the scales: terms[k][j] is component
   // k's term j, per channel.
-  void evaluateTerms(const double* x, const Vec3d& wi, const Vec3d& wo, std::vector<std::array<Rgb, MaxTerms>>& terms,
-                     std::vector<Rgb>& rests) const;
+  void evaluateTerms(const double* x, const Vec3d& wi, const Vec3d& wo,
+                     std::vector<std::array<Rgb, MaxTerms>>& terms, std::vector<Rgb>& rests) const;
 
  private:
   void addComponent(const nlohmann::json& description, const std::string& label, bool repeated);
@@ -149,8 +149,8 @@ std::vector<std::string> fittableModels();
 namespace detail {
 
 template <bool Derivatives, typename Kernel>
-void evaluateComponent(const Kernel& kernel, const FitComponent& comp, const double* x, size_t p, const Vec3d& wi,
-                       const Vec3d& wo, double value[3], double* rows) {
+void evaluateComponent(const Kernel& kernel, const FitComponent& comp, const double* x, size_t p,
+                       const Vec3d& wi, const Vec3d& wo, double value[3], double* rows) {
   constexpr int S = Kernel::Slots;
   constexpr int K = Kernel::Terms > 0 ? Kernel::Terms : 1;
   const int evaluations = comp.perChannel ? 3 : 1;
@@ -163,7 +163,8 @@ void evaluateComponent(const Kernel& kernel, const FitComponent& comp, const dou
     const int cBegin = comp.perChannel ? e : 0, cEnd = comp.perChannel ? e + 1 : 3;
     if constexpr (!Derivatives || S == 0) {
       std::array<double, (S > 0 ? S : 1)> slots{};
-      for (int i = 0; i < S; ++i) slots[size_t(i)] = slotIndex[size_t(i)] >= 0 ? x[slotIndex[size_t(i)]] : comp.heldSlot[size_t(i)];
+      for (int i = 0; i < S; ++i)
+        slots[size_t(i)] = slotIndex[size_t(i)] >= 0 ? x[slotIndex[size_t(i)]] : comp.heldSlot[size_t(i)];
       std::array<Rgb, K> terms;
       Rgb rest;
       kernel.eval(slots.data(), wi, wo, terms.data(), rest);
@@ -210,14 +211,17 @@ void evaluateComponent(const Kernel& kernel, const FitComponent& comp, const dou
 
 }  // namespace detail
 
-template <bool Derivatives>
-void FitModel::evaluate(const double* x, const Vec3d& wi, const Vec3d& wo, double value[3], double* rows) const {
+template <bool Derivatives> void FitModel::evaluate(const double* x, const Vec3d& wi, const Vec3d& wo,
+                                                    double value[3], double* rows) const {
   const size_t p = parameters_.size();
   value[0] = value[1] = value[2] = 0.0;
   if constexpr (Derivatives) std::fill(rows, rows + 3 * p, 0.0);
   for (const FitComponent& comp : components_)
-    std::visit([&](const auto& kernel) { detail::evaluateComponent<Derivatives>(kernel, comp, x, p, wi, wo, value, rows); },
-               comp.kernel);
+    std::visit(
+        [&](const auto& kernel) {
+          detail::evaluateComponent<Derivatives>(kernel, comp, x, p, wi, wo, value, rows);
+        },
+        comp.kernel);
 }
 
 }  // namespace scatterlab::fitting

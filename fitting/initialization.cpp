@@ -46,7 +46,8 @@ std::vector<Dimension> gridDimensions(const FitModel& model) {
     Dimension d;
     d.parameters = {index};
     d.component = p.component;
-    d.firstOfComponent = std::none_of(dims.begin(), dims.end(), [&](const Dimension& o) { return o.component == p.component; });
+    d.firstOfComponent = std::none_of(dims.begin(), dims.end(),
+                                      [&](const Dimension& o) { return o.component == p.component; });
     d.spacing = p.spacing;
     d.lower = p.lower;
     d.upper = p.upper;
@@ -194,7 +195,8 @@ class ScaleSolver {
         const double data = linear_.target(i, 0, c) - known;
         for (size_t q = 0; q < m; ++q) {
           b[size_t(c)][Eigen::Index(q)] += w * row[q] * data;
-          for (size_t r = 0; r <= q; ++r) a[size_t(c)](Eigen::Index(q), Eigen::Index(r)) += w * row[q] * row[r];
+          for (size_t r = 0; r <= q; ++r)
+            a[size_t(c)](Eigen::Index(q), Eigen::Index(r)) += w * row[q] * row[r];
         }
         row += stride_[size_t(c)];
       }
@@ -247,7 +249,8 @@ class ScaleSolver {
 
 }  // namespace
 
-GridSearch searchGrid(const FitModel& model, const BrdfSamples& samples, Metric metric, int budget, int threads) {
+GridSearch searchGrid(const FitModel& model, const BrdfSamples& samples, Metric metric, int budget,
+                      int threads) {
   const std::vector<Dimension> dims = gridDimensions(model);
   GridSearch search;
   search.dimensions = dims.size();
@@ -259,17 +262,19 @@ GridSearch searchGrid(const FitModel& model, const BrdfSamples& samples, Metric 
   search.points.resize(units.size());
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, units.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
-      ScaleSolver solver(model, linear, &actual);
-      for (size_t i = range.begin(); i != range.end(); ++i) {
-        GridPoint& point = search.points[i];
-        point.unit = units[i];
-        point.x = start;
-        for (size_t k = 0; k < dims.size(); ++k)
-          for (const size_t index : dims[k].parameters) point.x[index] = dims[k].at(units[i][k]);
-        point.cost = solver(point.x);
-      }
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, units.size(), 1),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        ScaleSolver solver(model, linear, &actual);
+                        for (size_t i = range.begin(); i != range.end(); ++i) {
+                          GridPoint& point = search.points[i];
+                          point.unit = units[i];
+                          point.x = start;
+                          for (size_t k = 0; k < dims.size(); ++k)
+                            for (const size_t index : dims[k].parameters)
+                              point.x[index] = dims[k].at(units[i][k]);
+                          point.cost = solver(point.x);
+                        }
+                      });
   });
   // Ties (equal costs) keep the grid's order, so the choice is reproducible.
   std::stable_sort(search.points.begin(), search.points.end(),

@@ -23,20 +23,21 @@
 namespace scatterlab::fitting {
 
 struct GridPoint {
-  std::vector<double> x;      // every parameter: grid shapes, solved scales
-  std::vector<double> unit;   // the point's position in [0, 1]^d
-  double cost = 0;            // the metric's S on the grid samples
+  std::vector<double> x;     // every parameter: grid shapes, solved scales
+  std::vector<double> unit;  // the point's position in [0, 1]^d
+  double cost = 0;           // the metric's S on the grid samples
 };
 
 struct GridSearch {
   std::vector<GridPoint> points;  // sorted by cost, best first
   size_t dimensions = 0;
-  double cellWidth = 1;           // of the grid in unit coordinates
+  double cellWidth = 1;  // of the grid in unit coordinates
 };
 
 // Every grid point with its solved scales and cost on `samples` (parallel over points,
 // each point summed in sample order: the same for any thread count).
-GridSearch searchGrid(const FitModel& model, const BrdfSamples& samples, Metric metric, int budget, int threads);
+GridSearch searchGrid(const FitModel& model, const BrdfSamples& samples, Metric metric, int budget,
+                      int threads);
 
 // The best `count` points of a search that are not grid neighbours of a better one.
 std::vector<GridPoint> distinctStarts(const GridSearch& search, int count);

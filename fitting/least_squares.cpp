@@ -15,9 +15,8 @@ double sinOf(const Vec3d& w) { return std::sqrt(std::max(0.0, w.x * w.x + w.y * 
 
 // Residuals of sample i, r[o * 3 + c], and with Derivatives their rows (rows[k * p + j]),
 // raw, before the robust loss. `modelRows` is scratch of 3 p. Returns the residual count.
-template <bool Derivatives>
-int sampleResiduals(const FitModel& model, const MetricSamples& samples, size_t i, const double* x, double* r,
-                    double* rows, double* modelRows) {
+template <bool Derivatives> int sampleResiduals(const FitModel& model, const MetricSamples& samples, size_t i,
+                                                const double* x, double* r, double* rows, double* modelRows) {
   const BrdfSamples& s = samples.samples();
   const size_t p = model.parameterCount();
   double m[3];
@@ -53,7 +52,9 @@ Robust robust(const ceres::LossFunction* loss, double s) {
 }  // namespace
 
 MetricSamples::MetricSamples(const BrdfSamples& samples, Metric metric)
-    : samples_(&samples), metric_(metric), evaluationMetric_(isLinear(metric) ? Metric::L2 : metric),
+    : samples_(&samples),
+      metric_(metric),
+      evaluationMetric_(isLinear(metric) ? Metric::L2 : metric),
       orderings_(isLinear(metric) ? 1 : 2) {
   const size_t n = samples.size();
   sqrtWeight_.resize(n * size_t(orderings_));
@@ -67,7 +68,8 @@ MetricSamples::MetricSamples(const BrdfSamples& samples, Metric metric)
     const double weights[2] = {metricWeight(metric, sinI, sinO), metricWeight(metric, sinO, sinI)};
     if (orderings_ == 1) {
       // g linear: the mean over both orderings of w (c f - c m)^2 is W (f - m)^2.
-      const double gain2[2] = {metricTransform(metric, 1.0, cosines[0]), metricTransform(metric, 1.0, cosines[1])};
+      const double gain2[2] = {metricTransform(metric, 1.0, cosines[0]),
+                               metricTransform(metric, 1.0, cosines[1])};
       const double merged = 0.5 * (weights[0] * gain2[0] * gain2[0] + weights[1] * gain2[1] * gain2[1]);
       sqrtWeight_[i] = std::sqrt(samples.weight[i] * merged);
       cosIn_[i] = 1.0;
@@ -78,7 +80,8 @@ MetricSamples::MetricSamples(const BrdfSamples& samples, Metric metric)
       const size_t k = i * 2 + size_t(o);
       sqrtWeight_[k] = std::sqrt(0.5 * samples.weight[i] * weights[o]);
       cosIn_[k] = cosines[o];
-      for (int c = 0; c < 3; ++c) target_[k * 3 + size_t(c)] = metricTransform(metric, samples.value[i][c], cosines[o]);
+      for (int c = 0; c < 3; ++c)
+        target_[k * 3 + size_t(c)] = metricTransform(metric, samples.value[i][c], cosines[o]);
     }
   }
 }
@@ -171,7 +174,8 @@ void BrdfLeastSquares::residuals(const double* x, size_t begin, size_t end, std:
     sampleResiduals<true>(*model_, *samples_, i, x, out, rows.data(), modelRows.data());
     for (int k = 0; k < perSample; ++k)
       for (size_t j = 0; j < p; ++j)
-        (*jacobian)(Eigen::Index((i - begin) * size_t(perSample) + size_t(k)), Eigen::Index(j)) = rows[size_t(k) * p + j];
+        (*jacobian)(Eigen::Index((i - begin) * size_t(perSample) + size_t(k)), Eigen::Index(j)) =
+            rows[size_t(k) * p + j];
   }
 }
 
@@ -212,7 +216,8 @@ void compressNormalEquations(const NormalEquations& equations, double* residuals
     const double d = equations.hessian(j, j);
     root[j] = d > 0 ? std::sqrt(d) : 1.0;
   }
-  const Eigen::MatrixXd normalised = root.cwiseInverse().asDiagonal() * equations.hessian * root.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd normalised =
+      root.cwiseInverse().asDiagonal() * equations.hessian * root.cwiseInverse().asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(normalised);
   const Eigen::VectorXd& lambda = eigen.eigenvalues();
   const Eigen::MatrixXd& v = eigen.eigenvectors();
@@ -243,7 +248,8 @@ CompressedCostFunction::CompressedCostFunction(const BrdfLeastSquares& problem) 
   mutable_parameter_block_sizes()->push_back(p);
 }
 
-bool CompressedCostFunction::Evaluate(double const* const* parameters, double* residuals, double** jacobians) const {
+bool CompressedCostFunction::Evaluate(double const* const* parameters, double* residuals,
+                                      double** jacobians) const {
   const size_t p = problem_->parameterCount();
   const double* x = parameters[0];
   // Ceres evaluates a point more than once (with bounds, its projected line search asks for

@@ -27,9 +27,9 @@
 #include <cstddef>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <ceres/cost_function.h>
 #include <ceres/loss_function.h>
+#include <Eigen/Dense>
 
 #include "fitting/brdf_samples.h"
 #include "fitting/fit_model.h"
@@ -55,7 +55,9 @@ class MetricSamples {
 
   double sqrtWeight(size_t i, int o) const { return sqrtWeight_[i * size_t(orderings_) + size_t(o)]; }
   double cosIn(size_t i, int o) const { return cosIn_[i * size_t(orderings_) + size_t(o)]; }
-  double target(size_t i, int o, int c) const { return target_[(i * size_t(orderings_) + size_t(o)) * 3 + size_t(c)]; }
+  double target(size_t i, int o, int c) const {
+    return target_[(i * size_t(orderings_) + size_t(o)) * 3 + size_t(c)];
+  }
 
  private:
   const BrdfSamples* samples_;
@@ -77,7 +79,8 @@ class BrdfLeastSquares {
 
   // `loss` may be null (plain least squares); `threads` 0 means all cores. The model, the
   // samples and the loss must outlive this object.
-  BrdfLeastSquares(const FitModel& model, const MetricSamples& samples, const ceres::LossFunction* loss, int threads);
+  BrdfLeastSquares(const FitModel& model, const MetricSamples& samples, const ceres::LossFunction* loss,
+                   int threads);
 
   const FitModel& model() const { return *model_; }
   const MetricSamples& samples() const { return *samples_; }
@@ -89,7 +92,8 @@ class BrdfLeastSquares {
 
   // The raw residuals (without the robust loss) of samples [begin, end) and, if jacobian is
   // not null, their rows: what the gradient checks compare with numeric derivatives.
-  void residuals(const double* x, size_t begin, size_t end, std::vector<double>& r, Eigen::MatrixXd* jacobian) const;
+  void residuals(const double* x, size_t begin, size_t end, std::vector<double>& r,
+                 Eigen::MatrixXd* jacobian) const;
 
   // Per channel, sum w (g(f) - g(m))^2, sum w g(f)^2 and sum w over every sample and
   // ordering (no robust loss): the RMS and relative errors a fit reports.
@@ -100,7 +104,8 @@ class BrdfLeastSquares {
   ChannelSums channelSums(const double* x) const;
 
  private:
-  template <typename ChunkResult, typename Evaluate> std::vector<ChunkResult> forEachChunk(Evaluate&& evaluate) const;
+  template <typename ChunkResult, typename Evaluate>
+  std::vector<ChunkResult> forEachChunk(Evaluate&& evaluate) const;
 
   const FitModel* model_;
   const MetricSamples* samples_;

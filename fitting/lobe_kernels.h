@@ -60,7 +60,8 @@ struct OrenNayarKernel {
 struct EonKernel {
   EonAlbedo albedoMode = EonAlbedo::Fitted;
   static constexpr int Slots = 4, Terms = 0;
-  template <typename T> void eval(const T* s, const Vec3d& wi, const Vec3d& wo, RgbT<T>*, RgbT<T>& rest) const {
+  template <typename T>
+  void eval(const T* s, const Vec3d& wi, const Vec3d& wo, RgbT<T>*, RgbT<T>& rest) const {
     rest = eonEval(rgbSlots(s), s[3], wi, wo, albedoMode);
   }
 };
@@ -164,7 +165,8 @@ template <template <typename> class Distribution> struct ConductorKernel {
 // Disney: slots baseColor (rgb) then the ten scalars in DisneyParametersT order.
 struct DisneyKernel {
   static constexpr int Slots = 13, Terms = 0;
-  template <typename T> void eval(const T* s, const Vec3d& wi, const Vec3d& wo, RgbT<T>*, RgbT<T>& rest) const {
+  template <typename T>
+  void eval(const T* s, const Vec3d& wi, const Vec3d& wo, RgbT<T>*, RgbT<T>& rest) const {
     DisneyParametersT<T> p;
     p.baseColor = rgbSlots(s);
     p.metallic = s[3];

@@ -58,10 +58,11 @@ WrittenMaterial writeMaterial(const std::vector<FittedPart>& input) {
   for (int ch = 0; ch < 3; ++ch) {
     if (remaining[ch] < -Slack || scalableNeed[ch] > remaining[ch] + Slack) {
       char text[200];
-      std::snprintf(text, sizeof text,
-                    "in channel %c the parts' scales add up to %.6g (> 1), which no blend of registry materials "
-                    "reproduces",
-                    "rgb"[ch], 1.0 - remaining[ch] + scalableNeed[ch]);
+      std::snprintf(
+          text, sizeof text,
+          "in channel %c the parts' scales add up to %.6g (> 1), which no blend of registry materials "
+          "reproduces",
+          "rgb"[ch], 1.0 - remaining[ch] + scalableNeed[ch]);
       return {std::nullopt, text};
     }
   }
@@ -104,7 +105,8 @@ WrittenMaterial writeMaterial(const std::vector<FittedPart>& input) {
       const double left = 1.0 - preceding[i][ch];
       w[ch] = left > 0 ? std::clamp(c[i][ch] / left, 0.0, 1.0) : 0.0;
     }
-    material = json{{"type", "blend"}, {"weight", rgbJson(w)}, {"materials", json::array({parts[i].material, material})}};
+    material = json{
+        {"type", "blend"}, {"weight", rgbJson(w)}, {"materials", json::array({parts[i].material, material})}};
   }
   try {
     return {completeMaterial(material), ""};

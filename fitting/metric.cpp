@@ -30,13 +30,15 @@ std::optional<E> parseName(const std::array<std::pair<E, const char*>, N>& table
   return std::nullopt;
 }
 
-template <typename E, size_t N> std::string nameOf(const std::array<std::pair<E, const char*>, N>& table, E value) {
+template <typename E, size_t N>
+std::string nameOf(const std::array<std::pair<E, const char*>, N>& table, E value) {
   for (const auto& [v, text] : table)
     if (v == value) return text;
   return "unknown";
 }
 
-template <typename E, size_t N> std::vector<std::string> namesOf(const std::array<std::pair<E, const char*>, N>& table) {
+template <typename E, size_t N>
+std::vector<std::string> namesOf(const std::array<std::pair<E, const char*>, N>& table) {
   std::vector<std::string> names;
   for (const auto& entry : table) names.emplace_back(entry.second);
   return names;
@@ -54,7 +56,8 @@ std::string describe(Metric metric) {
     case Metric::Ngan: return "ngan: Ngan et al. 2005, [(f - m) cos_i]^2 sin_i sin_o";
     case Metric::LowL2: return "low-l2: Low et al. 2012, [(f - m) cos_i]^2 sin_i";
     case Metric::LowLog: return "low-log: Low et al. 2012, [ln(1 + f cos_i) - ln(1 + m cos_i)]^2 sin_i";
-    case Metric::CubeRoot: return "cube-root: Fores et al. 2012, [(f cos_i)^(1/3) - (m cos_i)^(1/3)]^2 sin_i sin_o";
+    case Metric::CubeRoot:
+      return "cube-root: Fores et al. 2012, [(f cos_i)^(1/3) - (m cos_i)^(1/3)]^2 sin_i sin_o";
   }
   return "";
 }

@@ -20,8 +20,10 @@ void checkRadialFitInput(size_t points, size_t values, int parameterCount, const
   const size_t K = size_t(parameterCount);
   if (values != points) throw std::invalid_argument("fitRadialProfile: radii and values differ in length");
   if (points <= K) throw std::invalid_argument("fitRadialProfile: fewer points than parameters");
-  if (options.start.size() != K) throw std::invalid_argument("fitRadialProfile: start needs ParameterCount values");
-  if ((!options.lower.empty() && options.lower.size() != K) || (!options.upper.empty() && options.upper.size() != K))
+  if (options.start.size() != K)
+    throw std::invalid_argument("fitRadialProfile: start needs ParameterCount values");
+  if ((!options.lower.empty() && options.lower.size() != K) ||
+      (!options.upper.empty() && options.upper.size() != K))
     throw std::invalid_argument("fitRadialProfile: bounds need ParameterCount values");
   if (!options.weights.empty() && options.weights.size() != points)
     throw std::invalid_argument("fitRadialProfile: weights need one value per point");
@@ -35,8 +37,9 @@ RadialFitResult solveRadialFit(ceres::Problem& problem, std::vector<double>& par
     if (!options.lower.empty()) problem.SetParameterLowerBound(p, k, options.lower[size_t(k)]);
     if (!options.upper.empty()) problem.SetParameterUpperBound(p, k, options.upper[size_t(k)]);
   }
-  const ceres::Solver::Options solverOptions = denseSolverOptions(
-      options.maxIterations, options.functionTolerance, options.parameterTolerance, options.gradientTolerance);
+  const ceres::Solver::Options solverOptions =
+      denseSolverOptions(options.maxIterations, options.functionTolerance, options.parameterTolerance,
+                         options.gradientTolerance);
   ceres::Solver::Summary summary;
   ceres::Solve(solverOptions, &problem, &summary);
 
@@ -58,7 +61,8 @@ RadialFitResult solveRadialFit(ceres::Problem& problem, std::vector<double>& par
   if (result.covarianceAvailable) {
     std::vector<double> c(size_t(K * K));
     covariance.GetCovarianceBlock(p, p, c.data());
-    for (int k = 0; k < K; ++k) result.standardDeviations[size_t(k)] = std::sqrt(std::max(0.0, result.sigma2 * c[size_t(k * K + k)]));
+    for (int k = 0; k < K; ++k)
+      result.standardDeviations[size_t(k)] = std::sqrt(std::max(0.0, result.sigma2 * c[size_t(k * K + k)]));
   }
   return result;
 }

@@ -61,7 +61,7 @@ struct RadialFitOptions {
   std::vector<double> start;         // K values
   std::vector<double> lower, upper;  // K values each, or empty for no bounds
   RadialWeighting weighting = RadialWeighting::Area;
-  std::vector<double> weights;       // per point, or empty for 1
+  std::vector<double> weights;  // per point, or empty for 1
   int maxIterations = 200;
   double functionTolerance = 1e-14, parameterTolerance = 1e-12, gradientTolerance = 1e-16;
 };
@@ -72,7 +72,7 @@ struct RadialFitResult {
   double cost = 0;                         // S, the sum of squared weighted residuals
   double sigma2 = 0;                       // S / (N - K)
   int iterations = 0;
-  std::string termination;                 // CONVERGENCE, NO_CONVERGENCE, FAILURE
+  std::string termination;  // CONVERGENCE, NO_CONVERGENCE, FAILURE
   std::string message;
   bool converged = false;
   bool covarianceAvailable = false;
@@ -125,8 +125,8 @@ RadialFitResult solveRadialFit(ceres::Problem& problem, std::vector<double>& par
 }  // namespace detail
 
 template <RadialProfile Profile>
-RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double> radii, std::span<const double> values,
-                                 const RadialFitOptions& options) {
+RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double> radii,
+                                 std::span<const double> values, const RadialFitOptions& options) {
   constexpr int K = Profile::ParameterCount;
   const size_t n = radii.size();
   detail::checkRadialFitInput(n, values.size(), K, options);
@@ -137,8 +137,9 @@ RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double>
     const double weight = detail::radialWeight(options.weighting, radii[i], values[i]) *
                           (options.weights.empty() ? 1.0 : options.weights[i]);
     using Residual = detail::RadialPointResidual<Profile>;
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, K>(new Residual{&profile, radii[i], values[i], weight}),
-                             nullptr, parameters.data());
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<Residual, 1, K>(new Residual{&profile, radii[i], values[i], weight}),
+        nullptr, parameters.data());
   }
   return detail::solveRadialFit(problem, parameters, n, options);
 }
@@ -146,15 +147,16 @@ RadialFitResult fitRadialProfile(const Profile& profile, std::span<const double>
 // `edges` are n + 1 increasing radii (mm) bounding n annuli; `means` the n averages of R over
 // them (mm^-2).
 template <CumulativeRadialProfile Profile>
-RadialFitResult fitRadialAnnuli(const Profile& profile, std::span<const double> edges, std::span<const double> means,
-                                const RadialFitOptions& options) {
+RadialFitResult fitRadialAnnuli(const Profile& profile, std::span<const double> edges,
+                                std::span<const double> means, const RadialFitOptions& options) {
   constexpr int K = Profile::ParameterCount;
   if (edges.size() != means.size() + 1)
     throw std::invalid_argument("fitRadialAnnuli: n + 1 edges are needed for n annulus means");
   const size_t n = means.size();
   detail::checkRadialFitInput(n, means.size(), K, options);
   for (size_t i = 0; i < n; ++i)
-    if (!(edges[i] >= 0 && edges[i + 1] > edges[i])) throw std::invalid_argument("fitRadialAnnuli: edges must increase from >= 0");
+    if (!(edges[i] >= 0 && edges[i + 1] > edges[i]))
+      throw std::invalid_argument("fitRadialAnnuli: edges must increase from >= 0");
   quietCeresLogging();
   std::vector<double> parameters = options.start;
   ceres::Problem problem;
@@ -164,9 +166,9 @@ RadialFitResult fitRadialAnnuli(const Profile& profile, std::span<const double> 
                           (options.weights.empty() ? 1.0 : options.weights[i]);
     using Residual = detail::RadialAnnulusResidual<Profile>;
     const double area = Pi * (r1 * r1 - r0 * r0);
-    problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<Residual, 1, K>(new Residual{&profile, r0, r1, area, means[i], weight}), nullptr,
-        parameters.data());
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, K>(
+                                 new Residual{&profile, r0, r1, area, means[i], weight}),
+                             nullptr, parameters.data());
   }
   return detail::solveRadialFit(problem, parameters, n, options);
 }

@@ -9,8 +9,10 @@ namespace scatterlab {
 PinholeCamera::PinholeCamera(const Transform& cameraToWorld, double fovDegrees, int width, int height)
     : fovDegrees_(fovDegrees), width_(width), height_(height) {
   if (!(fovDegrees > 0 && fovDegrees < 180))
-    throw std::invalid_argument("PinholeCamera: field of view " + std::to_string(fovDegrees) + " not in (0, 180)");
-  if (width < 1 || height < 1) throw std::invalid_argument("PinholeCamera: film must be at least 1 x 1 pixels");
+    throw std::invalid_argument("PinholeCamera: field of view " + std::to_string(fovDegrees) +
+                                " not in (0, 180)");
+  if (width < 1 || height < 1)
+    throw std::invalid_argument("PinholeCamera: film must be at least 1 x 1 pixels");
   eye_ = cameraToWorld.point(Vec3d(0.0));
   forward_ = glm::normalize(cameraToWorld.vector(Vec3d(0, 0, -1)));
   right_ = glm::normalize(cameraToWorld.vector(Vec3d(1, 0, 0)));

@@ -19,8 +19,8 @@ class PinholeCamera {
   // fovDegrees in (0, 180); width, height >= 1. std::invalid_argument otherwise.
   PinholeCamera(const Transform& cameraToWorld, double fovDegrees, int width, int height);
   // A camera at `eye` looking at `target`, `up` the image's up direction.
-  static PinholeCamera lookAt(const Vec3d& eye, const Vec3d& target, const Vec3d& up, double fovDegrees, int width,
-                              int height);
+  static PinholeCamera lookAt(const Vec3d& eye, const Vec3d& target, const Vec3d& up, double fovDegrees,
+                              int width, int height);
 
   Ray generateRay(const Vec2d& film) const {
     const double x = (2.0 * film.x - width_) * pixelScale_;

@@ -24,11 +24,13 @@ std::string fitLabel(const std::string& label, int width, int scale) {
 Image composeContactSheet(const std::vector<ContactSheetEntry>& entries, const ContactSheetLayout& layout) {
   if (entries.empty()) throw std::invalid_argument("composeContactSheet: no entries");
   for (const ContactSheetEntry& entry : entries)
-    if (!entry.image || entry.image->channels() != 3 || entry.image->width() != entries.front().image->width() ||
+    if (!entry.image || entry.image->channels() != 3 ||
+        entry.image->width() != entries.front().image->width() ||
         entry.image->height() != entries.front().image->height())
       throw std::invalid_argument("composeContactSheet: every entry needs a 3-channel image of one size");
   const int count = int(entries.size());
-  const int columns = layout.columns > 0 ? std::min(layout.columns, count) : int(std::ceil(std::sqrt(double(count))));
+  const int columns =
+      layout.columns > 0 ? std::min(layout.columns, count) : int(std::ceil(std::sqrt(double(count))));
   const int rows = (count + columns - 1) / columns;
   const int cellWidth = entries.front().image->width(), cellHeight = entries.front().image->height();
   const int scale = layout.labelScale > 0 ? layout.labelScale : (cellWidth < 192 ? 1 : 2);
@@ -36,7 +38,8 @@ Image composeContactSheet(const std::vector<ContactSheetEntry>& entries, const C
   const int width = gap + columns * (cellWidth + gap), height = gap + rows * (cellHeight + strip + gap);
   Image sheet(width, height, 3, float(ContactSheetPaper));
   for (int i = 0; i < count; ++i) {
-    const int left = gap + (i % columns) * (cellWidth + gap), top = gap + (i / columns) * (cellHeight + strip + gap);
+    const int left = gap + (i % columns) * (cellWidth + gap),
+              top = gap + (i / columns) * (cellHeight + strip + gap);
     const Image& image = *entries[i].image;
     for (int y = 0; y < cellHeight; ++y)
       for (int x = 0; x < cellWidth; ++x) sheet.setRgb(left + x, top + y, image.rgb(x, y));

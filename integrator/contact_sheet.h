@@ -27,7 +27,8 @@ inline constexpr double ContactSheetPaper = 0.02;
 
 // A label too long for its cell is cut and ends in "..". std::invalid_argument for no
 // entries, a missing image or images of different sizes.
-Image composeContactSheet(const std::vector<ContactSheetEntry>& entries, const ContactSheetLayout& layout = {});
+Image composeContactSheet(const std::vector<ContactSheetEntry>& entries,
+                          const ContactSheetLayout& layout = {});
 
 // Height of the label strip under each cell at `scale`.
 int labelStripHeight(int scale);

@@ -20,9 +20,11 @@ Environment Environment::fromMap(Image image, double strength, const Transform& 
   const int width = image.width(), height = image.height();
   if (image.channels() != 3 || height < 1 || width != 2 * height)
     throw std::invalid_argument("Environment: map must be a 3-channel image twice as wide as tall");
-  if (!(strength >= 0) || !std::isfinite(strength)) throw std::invalid_argument("Environment: strength must be >= 0");
+  if (!(strength >= 0) || !std::isfinite(strength))
+    throw std::invalid_argument("Environment: strength must be >= 0");
   for (float v : image.data())
-    if (!(v >= 0) || !std::isfinite(v)) throw std::invalid_argument("Environment: radiance must be finite and >= 0");
+    if (!(v >= 0) || !std::isfinite(v))
+      throw std::invalid_argument("Environment: radiance must be finite and >= 0");
 
   auto map = std::make_shared<Map>();
   map->width = width;

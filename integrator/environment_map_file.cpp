@@ -10,11 +10,13 @@ namespace scatterlab {
 
 namespace {
 
-[[noreturn]] void badValue(const std::string& name, const Image& image, size_t index, const std::string& allowed) {
+[[noreturn]] void badValue(const std::string& name, const Image& image, size_t index,
+                           const std::string& allowed) {
   const size_t pixel = index / 3;
   std::ostringstream message;
   message << name << ": pixel (" << pixel % size_t(image.width()) << ", " << pixel / size_t(image.width())
-          << ") channel " << "RGB"[index % 3] << " is " << image.data()[index] << "; allowed: " << allowed;
+          << ") channel "
+          << "RGB"[index % 3] << " is " << image.data()[index] << "; allowed: " << allowed;
   throw RenderInputError(message.str());
 }
 
@@ -25,8 +27,9 @@ EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
   EnvironmentMapFile file{readExrRgb(path, "environment map")};
   Image& image = file.image;
   if (image.width() != 2 * image.height())
-    throw RenderInputError(name + ": " + std::to_string(image.width()) + " x " + std::to_string(image.height()) +
-                           " pixels is not an equirectangular map; allowed: width = 2 x height, e.g. 1024 x 512");
+    throw RenderInputError(
+        name + ": " + std::to_string(image.width()) + " x " + std::to_string(image.height()) +
+        " pixels is not an equirectangular map; allowed: width = 2 x height, e.g. 1024 x 512");
   std::vector<float>& values = image.data();
   double sum = 0.0;
   for (size_t i = 0; i < values.size(); ++i) {

@@ -38,7 +38,8 @@ void writeExr(const std::filesystem::path& path, const std::vector<ExrLayer>& la
       header.channels().insert(name, Imf::Channel(Imf::FLOAT));
       // Slices point into const data: OutputFile only reads them.
       char* base = reinterpret_cast<char*>(const_cast<float*>(image.data().data() + c));
-      frameBuffer.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(float) * 3, sizeof(float) * 3 * size_t(width)));
+      frameBuffer.insert(name,
+                         Imf::Slice(Imf::FLOAT, base, sizeof(float) * 3, sizeof(float) * 3 * size_t(width)));
     }
   }
   try {
@@ -58,7 +59,8 @@ namespace {
 // Throws unless `path` names an existing file.
 void checkReadable(const std::filesystem::path& path, const std::string& name) {
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw RenderInputError(name + ": no such file; allowed: an OpenEXR file");
+  if (!std::filesystem::exists(path, error))
+    throw RenderInputError(name + ": no such file; allowed: an OpenEXR file");
   if (std::filesystem::is_directory(path, error))
     throw RenderInputError(name + ": is a directory; allowed: an OpenEXR file");
 }
@@ -71,10 +73,12 @@ std::vector<std::string> readExrChannelNames(const std::filesystem::path& path) 
   try {
     const Imf::InputFile file(path.c_str());
     std::vector<std::string> names;
-    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) names.push_back(it.name());
+    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
+      names.push_back(it.name());
     return names;
   } catch (const std::exception& error) {
-    throw RenderInputError(name + ": cannot be read as OpenEXR (" + error.what() + "); allowed: an OpenEXR file");
+    throw RenderInputError(name + ": cannot be read as OpenEXR (" + error.what() +
+                           "); allowed: an OpenEXR file");
   }
 }
 
@@ -87,15 +91,18 @@ Image readExrRgb(const std::filesystem::path& path, const std::string& what) {
     const long width = long(window.max.x) - window.min.x + 1, height = long(window.max.y) - window.min.y + 1;
     constexpr long MaxSide = 1 << 16;
     if (width < 1 || height < 1 || width > MaxSide || height > MaxSide)
-      throw RenderInputError(name + ": data window of " + std::to_string(width) + " x " + std::to_string(height) +
-                             " pixels; allowed: 1 to " + std::to_string(MaxSide) + " pixels per side");
+      throw RenderInputError(name + ": data window of " + std::to_string(width) + " x " +
+                             std::to_string(height) + " pixels; allowed: 1 to " + std::to_string(MaxSide) +
+                             " pixels per side");
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
     const bool grey = !rgb && channels.findChannel("Y");
     if (!rgb && !grey) {
       std::string found;
-      for (auto it = channels.begin(); it != channels.end(); ++it) found += std::string(found.empty() ? "" : ", ") + it.name();
-      throw RenderInputError(name + ": has channels [" + found + "]; allowed: an image with R, G and B (or Y) channels");
+      for (auto it = channels.begin(); it != channels.end(); ++it)
+        found += std::string(found.empty() ? "" : ", ") + it.name();
+      throw RenderInputError(name + ": has channels [" + found +
+                             "]; allowed: an image with R, G and B (or Y) channels");
     }
     Image image(int(width), int(height), 3);
     Imf::FrameBuffer frameBuffer;
@@ -109,12 +116,14 @@ Image readExrRgb(const std::filesystem::path& path, const std::string& what) {
     file.setFrameBuffer(frameBuffer);
     file.readPixels(window.min.y, window.max.y);
     if (grey)
-      for (size_t i = 0; i < image.data().size(); i += 3) image.data()[i + 1] = image.data()[i + 2] = image.data()[i];
+      for (size_t i = 0; i < image.data().size(); i += 3)
+        image.data()[i + 1] = image.data()[i + 2] = image.data()[i];
     return image;
   } catch (const RenderInputError&) {
     throw;
   } catch (const std::exception& error) {
-    throw RenderInputError(name + ": cannot be read as OpenEXR (" + error.what() + "); allowed: an OpenEXR file");
+    throw RenderInputError(name + ": cannot be read as OpenEXR (" + error.what() +
+                           "); allowed: an OpenEXR file");
   }
 }
 

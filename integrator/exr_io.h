@@ -13,7 +13,7 @@ namespace scatterlab {
 // One layer of an EXR file: three channels named `prefix.X` for X in `channelNames` (just X
 // for the unnamed main layer), from a 3-channel image.
 struct ExrLayer {
-  std::string prefix;                      // "" for the main RGB layer
+  std::string prefix;                       // "" for the main RGB layer
   std::array<std::string, 3> channelNames;  // {"R", "G", "B"} or {"X", "Y", "Z"}
   const Image* image = nullptr;
 };

@@ -14,10 +14,10 @@
 namespace scatterlab {
 
 struct LightSample {
-  Vec3d direction;    // unit, from the shading point toward the light
-  double distance;    // to the light's surface; Infinity for lights at infinity
-  Rgb radiance;       // arriving along -direction; for a delta light, the irradiance it gives
-  double pdf;         // per unit solid angle; for a delta light, 1
+  Vec3d direction;  // unit, from the shading point toward the light
+  double distance;  // to the light's surface; Infinity for lights at infinity
+  Rgb radiance;     // arriving along -direction; for a delta light, the irradiance it gives
+  double pdf;       // per unit solid angle; for a delta light, 1
   bool isDelta = false;
 };
 

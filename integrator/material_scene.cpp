@@ -19,15 +19,15 @@ RenderableMaterial makeRenderableMaterial(const nlohmann::json& material) {
   return {nullptr, std::move(subsurface)};
 }
 
-Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode, Environment environment,
-                        int width, int height) {
+Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode,
+                        Environment environment, int width, int height) {
   if (material.subsurface)
     return makePresetScene(preset, *material.subsurface, mode, std::move(environment), width, height);
   return makePresetScene(preset, std::move(material.bsdf), std::move(environment), width, height);
 }
 
-Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment, int width,
-                        int height) {
+Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment,
+                        int width, int height) {
   return makeMaterialScene(preset, makeRenderableMaterial(material), SubsurfaceMode::Diffusion,
                            std::move(environment), width, height);
 }

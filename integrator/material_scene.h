@@ -34,11 +34,11 @@ struct RenderableMaterial {
 RenderableMaterial makeRenderableMaterial(const nlohmann::json& material);
 
 // The preset scene with the material on its sphere; a subsurface material is rendered in `mode`.
-Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode, Environment environment,
-                        int width, int height);
+Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode,
+                        Environment environment, int width, int height);
 
 // makeRenderableMaterial, then the preset scene (subsurface materials in the diffusion mode).
-Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment, int width,
-                        int height);
+Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment,
+                        int width, int height);
 
 }  // namespace scatterlab

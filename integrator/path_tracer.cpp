@@ -40,7 +40,8 @@ constexpr LobeFlags NonDelta = LobeFlags::Diffuse | LobeFlags::Glossy;
 
 }  // namespace
 
-PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random, const IntegratorSettings& settings) {
+PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random,
+                     const IntegratorSettings& settings) {
   PathSample out;
   Rgb throughput(1.0);
   double etaScale = 1.0;  // product of etaRel^2 over refractions (header comment)
@@ -71,7 +72,8 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
     const Vec3d wi = -ray.direction;
     if (hit->light >= 0) {
       const Rgb emitted = scene.emitted(*hit, wi);
-      if (emitted != Rgb(0.0)) out.radiance += throughput * emitted * emissionWeight(scene.emittedPdf(*hit, origin, lightSet));
+      if (emitted != Rgb(0.0))
+        out.radiance += throughput * emitted * emissionWeight(scene.emittedPdf(*hit, origin, lightSet));
     }
     if (bounce == 0) out.normal = hit->geometry.normal;
     if (bounce >= settings.maxDepth) break;
@@ -103,7 +105,8 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
       exitHit.shape = hit->shape;
       const Bsdf exitBsdf = exitHit.bsdf();
       const Vec3d& n = exit->geometry.normal;
-      if (nextEvent) out.radiance += throughput * directLighting(scene, exitHit, exitBsdf, n, random, estimator, lightSet);
+      if (nextEvent)
+        out.radiance += throughput * directLighting(scene, exitHit, exitBsdf, n, random, estimator, lightSet);
       const double uExitLobe = random.next();
       const std::optional<BsdfSample> exitSample = exitBsdf.sample(n, uExitLobe, random.next2D());
       if (!exitSample) break;
@@ -114,8 +117,9 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
       ray = spawnRay(exit->point, n, exitSample->wo);
     } else if (entersMedium) {
       // The random walk (subsurface.h): the radiance scalings of entering and leaving cancel.
-      const std::optional<WalkExit> exit = walkThroughMedium(
-          scene, hit->shape, *hit->subsurface, spawnRay(hit->point, hit->geometry.normal, sample->wo), random);
+      const std::optional<WalkExit> exit =
+          walkThroughMedium(scene, hit->shape, *hit->subsurface,
+                            spawnRay(hit->point, hit->geometry.normal, sample->wo), random);
       if (!exit) break;
       throughput *= sample->weight * exit->weight;
       fromDelta = true;  // no light was sampled where the walk left: emission found next counts in full

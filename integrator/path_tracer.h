@@ -44,8 +44,8 @@ struct IntegratorSettings {
 // What one camera sample carries back.
 struct PathSample {
   Rgb radiance{0.0};
-  Rgb albedo{0.0};      // the first vertex's BSDF sample weight f |cos| / pdf: an unbiased albedo estimate
-  Vec3d normal{0.0};    // the first vertex's shading normal; 0 when the camera ray escapes
+  Rgb albedo{0.0};        // the first vertex's BSDF sample weight f |cos| / pdf: an unbiased albedo estimate
+  Vec3d normal{0.0};      // the first vertex's shading normal; 0 when the camera ray escapes
   uint32_t vertices = 0;  // surface hits along the path (shadow rays not counted)
 };
 
@@ -57,6 +57,7 @@ inline double powerHeuristic(double pdfA, double pdfB) {
   return 1.0 / (1.0 + ratio * ratio);
 }
 
-PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random, const IntegratorSettings& settings);
+PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random,
+                     const IntegratorSettings& settings);
 
 }  // namespace scatterlab

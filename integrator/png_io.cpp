@@ -65,7 +65,8 @@ void writePngRgb8(const std::filesystem::path& path, int width, int height, cons
   if (width < 1 || height < 1 || rgb.size() != size_t(width) * height * 3)
     throw std::invalid_argument("writePngRgb8: size does not match the data");
   try {
-    writeFileAtomically(path, [&](const std::filesystem::path& temporary) { writePngFile(temporary, width, height, rgb); });
+    writeFileAtomically(
+        path, [&](const std::filesystem::path& temporary) { writePngFile(temporary, width, height, rgb); });
   } catch (const std::exception& error) {
     throw RenderInputError("cannot write \"" + path.string() + "\": " + error.what() +
                            "; allowed: a writable path in an existing directory");

@@ -21,8 +21,10 @@ void checkSettings(const PinholeCamera& camera, const RenderSettings& settings) 
   if (camera.width() > MaxImageSide || camera.height() > MaxImageSide ||
       int64_t(camera.width()) * camera.height() > MaxImagePixels)
     fail("image larger than the limits");
-  if (settings.samplesPerPixel < 1 || settings.samplesPerPixel > MaxSamplesPerPixel) fail("samples per pixel out of range");
-  if (settings.integrator.maxDepth < 0 || settings.integrator.maxDepth > MaxPathDepth) fail("maximum depth out of range");
+  if (settings.samplesPerPixel < 1 || settings.samplesPerPixel > MaxSamplesPerPixel)
+    fail("samples per pixel out of range");
+  if (settings.integrator.maxDepth < 0 || settings.integrator.maxDepth > MaxPathDepth)
+    fail("maximum depth out of range");
   if (settings.threads < 0) fail("negative thread count");
 }
 
@@ -53,7 +55,8 @@ struct PixelAccumulator {
 
 }  // namespace
 
-RenderResult render(const Scene& scene, const RenderSettings& settings, const std::function<void(double)>& progress) {
+RenderResult render(const Scene& scene, const RenderSettings& settings,
+                    const std::function<void(double)>& progress) {
   const PinholeCamera& camera = scene.camera();
   checkSettings(camera, settings);
   const int width = camera.width(), height = camera.height();

@@ -32,7 +32,8 @@ struct RenderSettings {
 
 // Limits on what render() accepts (a pixel or sample index must fit SampleStream's 32 bits).
 inline constexpr int MaxImageSide = 16384;
-inline constexpr int64_t MaxImagePixels = int64_t(1) << 25;  // 8192 x 4096: 0.4 GB of colour, 1.6 GB with every layer
+inline constexpr int64_t MaxImagePixels = int64_t(1)
+                                          << 25;  // 8192 x 4096: 0.4 GB of colour, 1.6 GB with every layer
 inline constexpr int MaxSamplesPerPixel = 1 << 20;
 inline constexpr int MaxPathDepth = 1024;
 

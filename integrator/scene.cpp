@@ -15,7 +15,8 @@ int Scene::addMaterial(std::unique_ptr<BsdfModel> model) {
   return int(materials_.size()) - 1;
 }
 
-int Scene::addCheckerMaterial(std::unique_ptr<BsdfModel> even, std::unique_ptr<BsdfModel> odd, double squareSize) {
+int Scene::addCheckerMaterial(std::unique_ptr<BsdfModel> even, std::unique_ptr<BsdfModel> odd,
+                              double squareSize) {
   if (!even || !odd) throw std::invalid_argument("Scene::addCheckerMaterial: missing model");
   if (!(squareSize > 0) || !std::isfinite(squareSize))
     throw std::invalid_argument("Scene::addCheckerMaterial: square size must be > 0");
@@ -57,9 +58,12 @@ int Scene::addSphere(const Sphere& sphere, int material) {
 
 int Scene::addSphere(const Transform& objectToWorld, int material) {
   const std::optional<double> scale = objectToWorld.uniformScale();
-  if (!scale) throw std::invalid_argument("Scene::addSphere: the transform must be a similarity (no shear, no mirror, uniform scale)");
-  return addSphere(Sphere{objectToWorld.point(Vec3d(0.0)), *scale, glm::normalize(objectToWorld.vector(Vec3d(0, 0, 1)))},
-                   material);
+  if (!scale)
+    throw std::invalid_argument(
+        "Scene::addSphere: the transform must be a similarity (no shear, no mirror, uniform scale)");
+  return addSphere(
+      Sphere{objectToWorld.point(Vec3d(0.0)), *scale, glm::normalize(objectToWorld.vector(Vec3d(0, 0, 1)))},
+      material);
 }
 
 int Scene::addPlane(const Plane& plane, int material) {
@@ -68,7 +72,8 @@ int Scene::addPlane(const Plane& plane, int material) {
   placed.normal = glm::normalize(plane.normal);
   placed.tangent = plane.tangent - placed.normal * glm::dot(placed.normal, plane.tangent);
   if (!(glm::length(placed.tangent) > 1e-9) || !isFinite(placed.normal) || !isFinite(plane.point))
-    throw std::invalid_argument("Scene::addPlane: needs a finite point, a normal and a tangent not parallel to it");
+    throw std::invalid_argument(
+        "Scene::addPlane: needs a finite point, a normal and a tangent not parallel to it");
   placed.tangent = glm::normalize(placed.tangent);
   const int shape = addShape(false, int(planes_.size()));
   planes_.push_back({placed, material, shape});
@@ -172,7 +177,8 @@ bool Scene::occluded(const Ray& ray, double tMax) const {
 }
 
 double Scene::intersectShape(int shape, const Ray& ray, double tMin, double tMax) const {
-  if (shape < 0 || shape >= int(shapes_.size())) throw std::invalid_argument("Scene::intersectShape: no such shape");
+  if (shape < 0 || shape >= int(shapes_.size()))
+    throw std::invalid_argument("Scene::intersectShape: no such shape");
   const ShapeRef& ref = shapes_[shape];
   return ref.isSphere ? spheres_[ref.index].geometry.intersect(ray, tMin, tMax)
                       : planes_[ref.index].geometry.intersect(ray, tMin, tMax);
@@ -180,10 +186,12 @@ double Scene::intersectShape(int shape, const Ray& ray, double tMin, double tMax
 
 SurfaceGeometry Scene::shapeGeometry(int shape, const Vec3d& point) const {
   const ShapeRef& ref = shapes_[size_t(shape)];
-  return ref.isSphere ? spheres_[ref.index].geometry.geometryAt(point) : planes_[ref.index].geometry.geometryAt(point);
+  return ref.isSphere ? spheres_[ref.index].geometry.geometryAt(point)
+                      : planes_[ref.index].geometry.geometryAt(point);
 }
 
-std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, const Vec2d& u, LightSet set) const {
+std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, const Vec2d& u,
+                                              LightSet set) const {
   const std::vector<LightRef>& candidates = lights(set);
   if (candidates.empty()) return std::nullopt;
   const int count = int(candidates.size());
@@ -191,7 +199,8 @@ std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, co
   std::optional<LightSample> sample;
   switch (light.kind) {
     case LightKind::Environment:
-      if (const auto s = environment_->sample(u)) sample = LightSample{s->direction, Infinity, s->radiance, s->pdf};
+      if (const auto s = environment_->sample(u))
+        sample = LightSample{s->direction, Infinity, s->radiance, s->pdf};
       break;
     case LightKind::Sphere: sample = sphereLights_[light.index].sample(p, u); break;
     case LightKind::Sun: sample = suns_[light.index].sample(u); break;

@@ -38,9 +38,9 @@ struct SurfaceInteraction {
   double t = Infinity;
   Vec3d point{0.0};
   SurfaceGeometry geometry{};
-  const BsdfModel* model = nullptr;  // the material's model at this point
-  int shape = -1;                    // Scene::shape index
-  int light = -1;                    // index into Scene::sphereLights(), or -1: not an emitter
+  const BsdfModel* model = nullptr;             // the material's model at this point
+  int shape = -1;                               // Scene::shape index
+  int light = -1;                               // index into Scene::sphereLights(), or -1: not an emitter
   const SceneSubsurface* subsurface = nullptr;  // the medium below, for a subsurface material
 
   // True when the model must not be mirrored to the front side (it has transmission).
@@ -48,9 +48,10 @@ struct SurfaceInteraction {
   // The shading frame: the shape's tangent is already orthogonal to the normal and of unit
   // length where it exists (shapes.h), so it is used as it is.
   Bsdf bsdf() const {
-    const Framed frame = geometry.tangent == Vec3d(0.0)
-                             ? Framed::fromNormal(geometry.normal)
-                             : Framed(geometry.tangent, glm::cross(geometry.normal, geometry.tangent), geometry.normal);
+    const Framed frame =
+        geometry.tangent == Vec3d(0.0)
+            ? Framed::fromNormal(geometry.normal)
+            : Framed(geometry.tangent, glm::cross(geometry.normal, geometry.tangent), geometry.normal);
     return Bsdf(*model, frame, twoSided());
   }
 };
@@ -159,7 +160,9 @@ class Scene {
     int index;
   };
 
-  const std::vector<LightRef>& lights(LightSet set) const { return set == LightSet::All ? lights_ : misLights_; }
+  const std::vector<LightRef>& lights(LightSet set) const {
+    return set == LightSet::All ? lights_ : misLights_;
+  }
   int addShape(bool isSphere, int index);
   const BsdfModel* modelAt(int material, const Vec2d& uv) const;
   void checkMaterial(int material) const;

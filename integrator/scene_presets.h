@@ -34,8 +34,8 @@ struct MaterialSphereSetup {
 };
 
 // The preset with `material` on the sphere, lit by `environment`, seen at width x height.
-Scene makePresetScene(ScenePreset preset, std::unique_ptr<BsdfModel> material, Environment environment, int width,
-                      int height);
+Scene makePresetScene(ScenePreset preset, std::unique_ptr<BsdfModel> material, Environment environment,
+                      int width, int height);
 // The same with a subsurface material on the sphere, rendered in `mode` (subsurface.h).
 Scene makePresetScene(ScenePreset preset, const SubsurfaceMaterial& material, SubsurfaceMode mode,
                       Environment environment, int width, int height);

@@ -43,7 +43,8 @@ std::unique_ptr<BsdfModel> makeSubsurfaceBoundary(const SubsurfaceMaterial& mate
                              MultipleScattering::KullaConty);
 }
 
-SceneSubsurface::SceneSubsurface(const SubsurfaceMaterial& m, SubsurfaceMode walkMode, const BsdfModel& boundaryModel)
+SceneSubsurface::SceneSubsurface(const SubsurfaceMaterial& m, SubsurfaceMode walkMode,
+                                 const BsdfModel& boundaryModel)
     : material(m),
       mode(walkMode),
       boundary(&boundaryModel),
@@ -52,8 +53,9 @@ SceneSubsurface::SceneSubsurface(const SubsurfaceMaterial& m, SubsurfaceMode wal
       sigmaS(material.medium.sigmaS),
       sigmaT(material.medium.sigmaS + material.medium.sigmaA) {}
 
-std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape, const SceneSubsurface& subsurface,
-                                                 const Vec3d& point, const Vec3d& normal, SampleStream& random) {
+std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape,
+                                                 const SceneSubsurface& subsurface, const Vec3d& point,
+                                                 const Vec3d& normal, SampleStream& random) {
   const Framed frame = Framed::fromNormal(normal);
   const double uChoice = random.next();
   const ProbeSegment segment = subsurface.probe.sample(frame, point, uChoice, random.next2D());
@@ -63,7 +65,8 @@ std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape, 
   const Ray ray{segment.start, chord / length};
   // Every crossing of the chord with the shape; successive searches start just past the last
   // one (the relative offset of ray.h).
-  const double step = RayOffsetScale * std::max({1.0, length, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+  const double step =
+      RayOffsetScale * std::max({1.0, length, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
   std::array<double, MaxProbeCrossings> crossings{};
   int count = 0;
   for (double tMin = 0.0; count < MaxProbeCrossings;) {
@@ -95,7 +98,9 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
     // The channel of this flight, with probabilities proportional to the walk's weights.
     const Rgb channelProbability = weight / (weight.x + weight.y + weight.z);
     const double uChannel = random.next();
-    const int channel = uChannel < channelProbability.x ? 0 : uChannel < channelProbability.x + channelProbability.y ? 1 : 2;
+    const int channel = uChannel < channelProbability.x                          ? 0
+                        : uChannel < channelProbability.x + channelProbability.y ? 1
+                                                                                 : 2;
     const double flight = sigmaT[channel] > 0 ? -std::log1p(-random.next()) / sigmaT[channel] : Infinity;
     if (flight < boundary) {
       // A collision: sigma_s,k T_k(t) over the mixture density of the three flights.
@@ -112,10 +117,12 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
       const SurfaceGeometry geometry = scene.shapeGeometry(shape, hit);
       const Bsdf interface(*subsurface.boundary, Framed::fromNormal(geometry.normal), false);
       const double uLobe = random.next();
-      const std::optional<BsdfSample> sample = interface.sample(-d, uLobe, random.next2D(), TransportMode::Radiance);
+      const std::optional<BsdfSample> sample =
+          interface.sample(-d, uLobe, random.next2D(), TransportMode::Radiance);
       if (!sample || sample->weight == Rgb(0.0)) return std::nullopt;
       weight *= sample->weight;
-      if (hasAny(sample->lobe, LobeFlags::Transmission)) return WalkExit{hit, geometry.normal, sample->wo, weight};
+      if (hasAny(sample->lobe, LobeFlags::Transmission))
+        return WalkExit{hit, geometry.normal, sample->wo, weight};
       d = sample->wo;
       p = offsetRayOrigin(hit, geometry.normal, d);
     }

@@ -62,9 +62,9 @@ struct SceneSubsurface {
   SubsurfaceMaterial material;
   SubsurfaceMode mode;
   const BsdfModel* boundary;
-  ProbeSampler probe;        // over material.profile
-  SubsurfaceExitBsdf exit;   // Sw at the probe's exit point
-  Rgb sigmaS, sigmaT;        // scene units^-1
+  ProbeSampler probe;       // over material.profile
+  SubsurfaceExitBsdf exit;  // Sw at the probe's exit point
+  Rgb sigmaS, sigmaT;       // scene units^-1
 };
 
 // Diffusion: the point where the light entered, found from `point` (normal `normal`) on shape
@@ -74,8 +74,9 @@ struct DiffusionExit {
   SurfaceGeometry geometry;
   Rgb weight;
 };
-std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape, const SceneSubsurface& subsurface,
-                                                 const Vec3d& point, const Vec3d& normal, SampleStream& random);
+std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape,
+                                                 const SceneSubsurface& subsurface, const Vec3d& point,
+                                                 const Vec3d& normal, SampleStream& random);
 
 // Random walk along `inward` (from just inside shape `shape`: spawnRay) until it leaves
 // by a transmission: the exit point, its outward normal, the outgoing direction and the walk's

@@ -16,7 +16,9 @@ class Transform {
   Transform() = default;
   explicit Transform(const glm::dmat4& matrix) : matrix_(matrix), inverse_(glm::inverse(matrix)) {}
 
-  static Transform translate(const Vec3d& offset) { return Transform(glm::translate(glm::dmat4(1.0), offset)); }
+  static Transform translate(const Vec3d& offset) {
+    return Transform(glm::translate(glm::dmat4(1.0), offset));
+  }
   static Transform rotate(double degrees, const Vec3d& axis) {
     return Transform(glm::rotate(glm::dmat4(1.0), radians(degrees), glm::normalize(axis)));
   }
@@ -28,7 +30,9 @@ class Transform {
     return Transform(glm::inverse(glm::lookAt(eye, target, up)));
   }
 
-  Transform operator*(const Transform& other) const { return Transform(matrix_ * other.matrix_, other.inverse_ * inverse_); }
+  Transform operator*(const Transform& other) const {
+    return Transform(matrix_ * other.matrix_, other.inverse_ * inverse_);
+  }
   Transform inverse() const { return Transform(inverse_, matrix_); }
 
   Vec3d point(const Vec3d& p) const { return Vec3d(matrix_ * glm::dvec4(p, 1.0)); }

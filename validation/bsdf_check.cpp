@@ -35,8 +35,8 @@ std::string fileStem(const std::string& label, double wiTheta) {
   return safeFileStem(label) + "_wi" + format("%g", wiTheta);
 }
 
-CheckRow makeRow(const std::string& label, const std::string& test, double wiTheta, double statistic, double threshold,
-                 bool passed, std::string note) {
+CheckRow makeRow(const std::string& label, const std::string& test, double wiTheta, double statistic,
+                 double threshold, bool passed, std::string note) {
   CheckRow row;
   row.material = label;
   row.test = test;
@@ -48,7 +48,8 @@ CheckRow makeRow(const std::string& label, const std::string& test, double wiThe
   return row;
 }
 
-CheckRow chiSquareRow(const std::string& label, const std::string& test, double wiTheta, const ChiSquareResult& r) {
+CheckRow chiSquareRow(const std::string& label, const std::string& test, double wiTheta,
+                      const ChiSquareResult& r) {
   CheckRow row = makeRow(label, test, wiTheta, r.statistic, r.threshold, r.passed,
                          r.failure.empty() ? std::to_string(r.pooledCells) + " cells pooled" : r.failure);
   row.dof = r.dof;
@@ -57,7 +58,8 @@ CheckRow chiSquareRow(const std::string& label, const std::string& test, double 
 }
 
 double perTestThreshold(const BsdfCheckOptions& options, int runCount) {
-  return sidakSignificance(options.alpha, options.chiSquareTestCount > 0 ? options.chiSquareTestCount : runCount);
+  return sidakSignificance(options.alpha,
+                           options.chiSquareTestCount > 0 ? options.chiSquareTestCount : runCount);
 }
 
 QuadratureOptions kitQuadrature(size_t samples) {
@@ -74,15 +76,16 @@ CheckRow consistencyRow(const std::string& label, const std::string& test, doubl
   std::string note = format("%.0f samples, max weight error %.2e, max pdf error %.2e", double(n),
                             consistency.maxWeightError, consistency.maxPdfError);
   if (consistency.supportViolations)
-    note = std::to_string(consistency.supportViolations) + " of " + std::to_string(consistency.supportProbes) +
-           " directions have eval > 0 but pdf = 0; " + note;
+    note = std::to_string(consistency.supportViolations) + " of " +
+           std::to_string(consistency.supportProbes) + " directions have eval > 0 but pdf = 0; " + note;
   if (!consistency.firstFailure.empty()) note += "; first failure: " + consistency.firstFailure;
   return makeRow(label, test, wiTheta, std::max(consistency.maxWeightError, consistency.maxPdfError),
                  ConsistencyTolerance, consistency.passed(), note);
 }
 
-CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
-                                 double wiTheta, uint64_t seed, double threshold) {
+CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& label,
+                                 const BsdfCheckOptions& options, double wiTheta, uint64_t seed,
+                                 double threshold) {
   const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
   const SphericalGrid grid{options.thetaBins, options.phiBins};
   const size_t n = options.samples;
@@ -103,39 +106,41 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
   // Weights must match eval |cos| / pdf in whichever mode a caller uses: with transmission,
   // both modes are checked, and how they relate. The second mode's checks are per-sample
   // identities (no statistics, no albedo estimate), so a quarter of the samples is enough.
-  const ConsistencyResult consistency = checkConsistency(model, wi, grid, n, seed, DefaultSupportProbes, mode);
-  report.rows.push_back(
-      consistencyRow(label, transmission ? "consistency (importance)" : "consistency", wiTheta, consistency, n));
+  const ConsistencyResult consistency =
+      checkConsistency(model, wi, grid, n, seed, DefaultSupportProbes, mode);
+  report.rows.push_back(consistencyRow(label, transmission ? "consistency (importance)" : "consistency",
+                                       wiTheta, consistency, n));
   if (transmission) {
     const size_t nModes = std::max<size_t>(n / 4, std::min<size_t>(n, 10000));
     const ConsistencyResult radiance =
         checkConsistency(model, wi, grid, nModes, seed, DefaultSupportProbes, TransportMode::Radiance);
     report.rows.push_back(consistencyRow(label, "consistency (radiance)", wiTheta, radiance, nModes));
     const TransportModesResult modes = checkTransportModes(model, wi, nModes, seed);
-    std::string note = format("%.0f samples: same wo, pdf, lobe; eta = n(wo)/n(wi); radiance weight = importance "
-                              "weight / eta^2 (max error %.2e)",
-                              double(nModes), modes.maxWeightError);
+    std::string note = format(
+        "%.0f samples: same wo, pdf, lobe; eta = n(wo)/n(wi); radiance weight = importance "
+        "weight / eta^2 (max error %.2e)",
+        double(nModes), modes.maxWeightError);
     if (!modes.firstFailure.empty())
       note = std::to_string(modes.violations) + " violations, first: " + modes.firstFailure + "; " + note;
-    report.rows.push_back(
-        makeRow(label, "transport modes", wiTheta, modes.maxWeightError, ConsistencyTolerance, modes.passed(), note));
+    report.rows.push_back(makeRow(label, "transport modes", wiTheta, modes.maxWeightError,
+                                  ConsistencyTolerance, modes.passed(), note));
   }
 
   const EnergyResult energy = energyFromIntegrals(cells, histogram);
-  report.rows.push_back(makeRow(
-      label, "normalisation", wiTheta, energy.normalisationError, energy.normalisationTolerance,
-      energy.normalisationError <= energy.normalisationTolerance,
-      format("integral of pdf %.6f + delta %.6f vs 1 - P(fail) = %.6f", energy.pdfIntegral, energy.deltaProbability,
-             1.0 - energy.failureProbability)));
+  report.rows.push_back(
+      makeRow(label, "normalisation", wiTheta, energy.normalisationError, energy.normalisationTolerance,
+              energy.normalisationError <= energy.normalisationTolerance,
+              format("integral of pdf %.6f + delta %.6f vs 1 - P(fail) = %.6f", energy.pdfIntegral,
+                     energy.deltaProbability, 1.0 - energy.failureProbability)));
 
   const double maxAlbedo = std::max({energy.albedo.x, energy.albedo.y, energy.albedo.z});
-  const std::string quadratureMode = transmission ? "quadrature + deltas, importance transport" : "quadrature";
-  report.rows.push_back(makeRow(label, "albedo", wiTheta, maxAlbedo, 1.0 + AlbedoTolerance,
-                                maxAlbedo <= 1.0 + AlbedoTolerance,
-                                "directional albedo (" + quadratureMode + ")" +
-                                    format(" r %.5f g %.5f b %.5f", energy.albedo.x, energy.albedo.y,
-                                           energy.albedo.z) +
-                                    (model.isLossless() ? "" : format(", loses %.2f%% at least", 100 * (1 - maxAlbedo)))));
+  const std::string quadratureMode =
+      transmission ? "quadrature + deltas, importance transport" : "quadrature";
+  report.rows.push_back(
+      makeRow(label, "albedo", wiTheta, maxAlbedo, 1.0 + AlbedoTolerance, maxAlbedo <= 1.0 + AlbedoTolerance,
+              "directional albedo (" + quadratureMode + ")" +
+                  format(" r %.5f g %.5f b %.5f", energy.albedo.x, energy.albedo.y, energy.albedo.z) +
+                  (model.isLossless() ? "" : format(", loses %.2f%% at least", 100 * (1 - maxAlbedo)))));
 
   double worstZ = 0;
   for (int c = 0; c < 3; ++c) {
@@ -143,14 +148,14 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
                      (consistency.albedoStdError[c] + AlbedoQuadratureFloor);
     worstZ = std::max(worstZ, std::isfinite(z) ? z : INFINITY);
   }
-  report.rows.push_back(makeRow(label, "albedo-mc", wiTheta, worstZ, AlbedoAgreementSigmas,
-                                worstZ <= AlbedoAgreementSigmas,
-                                format("importance-sampled albedo r %.5f g %.5f b %.5f (|z| vs quadrature)",
-                                       consistency.albedoMean.x, consistency.albedoMean.y, consistency.albedoMean.z)));
+  report.rows.push_back(
+      makeRow(label, "albedo-mc", wiTheta, worstZ, AlbedoAgreementSigmas, worstZ <= AlbedoAgreementSigmas,
+              format("importance-sampled albedo r %.5f g %.5f b %.5f (|z| vs quadrature)",
+                     consistency.albedoMean.x, consistency.albedoMean.y, consistency.albedoMean.z)));
 
   if (model.isLossless()) {
-    const double deviation = std::max({std::abs(energy.albedo.x - 1), std::abs(energy.albedo.y - 1),
-                                       std::abs(energy.albedo.z - 1)});
+    const double deviation = std::max(
+        {std::abs(energy.albedo.x - 1), std::abs(energy.albedo.y - 1), std::abs(energy.albedo.z - 1)});
     report.rows.push_back(makeRow(label, "furnace", wiTheta, deviation, FurnaceTolerance,
                                   deviation <= FurnaceTolerance, "lossless model: |albedo - 1| per channel"));
   }
@@ -169,7 +174,8 @@ std::vector<double> incidentAngles(const BsdfCheckOptions& options, const BsdfMo
   if (!options.transmissionFromBelow || !hasTransmission(model)) return angles;
   for (const double theta : options.wiThetaDeg) {
     const double below = 180.0 - theta;
-    if (theta < 90.0 && std::find(angles.begin(), angles.end(), below) == angles.end()) angles.push_back(below);
+    if (theta < 90.0 && std::find(angles.begin(), angles.end(), below) == angles.end())
+      angles.push_back(below);
   }
   return angles;
 }
@@ -188,7 +194,8 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
   const size_t steps = angles.size() + 1;
   for (size_t k = 0; k < angles.size(); ++k) {
     if (progress) progress(label + ": wi " + format("%g", angles[k]) + " deg", double(k) / steps);
-    report.append(checkAtIncidentAngle(model, label, options, angles[k], deriveSeed(options.seed, k), threshold));
+    report.append(
+        checkAtIncidentAngle(model, label, options, angles[k], deriveSeed(options.seed, k), threshold));
   }
   if (progress) progress(label + ": reciprocity", double(steps - 1) / steps);
   // Through a refraction the relation depends on the transport mode (reciprocity.h): models
@@ -200,9 +207,10 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
   };
   std::vector<Relation> relations{{"reciprocity", ReciprocityRelation::Radiance, "f(wi,wo) = f(wo,wi)"}};
   if (hasTransmission(model))
-    relations = {{"reciprocity (radiance)", ReciprocityRelation::Radiance, "f(wi,wo)/n(wi)^2 = f(wo,wi)/n(wo)^2"},
-                 {"reciprocity (importance)", ReciprocityRelation::Importance, "f(wi,wo)/n(wo)^2 = f(wo,wi)/n(wi)^2"},
-                 {"adjoint", ReciprocityRelation::Adjoint, "f(wi,wo,radiance) = f(wo,wi,importance)"}};
+    relations = {
+        {"reciprocity (radiance)", ReciprocityRelation::Radiance, "f(wi,wo)/n(wi)^2 = f(wo,wi)/n(wo)^2"},
+        {"reciprocity (importance)", ReciprocityRelation::Importance, "f(wi,wo)/n(wo)^2 = f(wo,wi)/n(wi)^2"},
+        {"adjoint", ReciprocityRelation::Adjoint, "f(wi,wo,radiance) = f(wo,wi,importance)"}};
   // A model made of delta lobes has eval = 0 for every pair: the rows pass trivially, and say so.
   const bool deltaOnly = !hasAny(model.flags(), LobeFlags::Diffuse | LobeFlags::Glossy);
   for (const Relation& relation : relations) {
@@ -211,12 +219,13 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
     row.test = relation.test;
     row.threshold = ReciprocityTolerance;
     if (model.isReciprocal()) {
-      const ReciprocityResult r = checkReciprocity(model, size_t(options.reciprocityPairs),
-                                                   deriveSeed(options.seed, 1000), model.interiorIndex(),
-                                                   relation.relation);
+      const ReciprocityResult r =
+          checkReciprocity(model, size_t(options.reciprocityPairs), deriveSeed(options.seed, 1000),
+                           model.interiorIndex(), relation.relation);
       row.statistic = r.maxError;
       row.passed = r.passed();
-      row.note = std::string(relation.what) + " on " + std::to_string(r.pairs) + " random pairs over the sphere" +
+      row.note = std::string(relation.what) + " on " + std::to_string(r.pairs) +
+                 " random pairs over the sphere" +
                  (deltaOnly ? " (delta lobes only: eval is 0 everywhere, nothing to compare)" : "") +
                  (r.worst.empty() ? "" : "; " + r.worst);
     } else {
@@ -229,8 +238,9 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
   return report;
 }
 
-CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler, const std::string& label,
-                                const BsdfCheckOptions& options, const ProgressCallback& progress) {
+CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler,
+                                const std::string& label, const BsdfCheckOptions& options,
+                                const ProgressCallback& progress) {
   CheckReport report;
   const std::vector<double> angles = incidentAngles(options, model);
   const double threshold = perTestThreshold(options, int(angles.size()));

@@ -24,13 +24,13 @@ namespace scatterlab {
 
 struct BsdfCheckOptions {
   std::vector<double> wiThetaDeg{0, 30, 60, 85, 89};
-  double wiPhiDeg = 30.0;         // off the tangent axes, so anisotropy bugs show
+  double wiPhiDeg = 30.0;  // off the tangent axes, so anisotropy bugs show
   size_t samples = 1'000'000;
-  int thetaBins = 64;             // cos(theta) cells over [-1, 1]
-  int phiBins = 128;              // phi cells over [-pi, pi]
+  int thetaBins = 64;  // cos(theta) cells over [-1, 1]
+  int phiBins = 128;   // phi cells over [-pi, pi]
   uint64_t seed = 1;
-  double alpha = 0.01;            // family-wise significance before the Sidak correction
-  int chiSquareTestCount = 0;     // tests in the whole suite for the Sidak correction; 0: this run's count
+  double alpha = 0.01;         // family-wise significance before the Sidak correction
+  int chiSquareTestCount = 0;  // tests in the whole suite for the Sidak correction; 0: this run's count
   std::optional<std::filesystem::path> imageDir;  // write observed/expected/residual PNGs here
   bool imagesOnFailureOnly = false;
   int reciprocityPairs = 10000;
@@ -50,10 +50,12 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
 // The negative controls (negative_controls.h) of `model`, each run through the chi-square
 // test at every incident angle (incidentAngles(): with transmission, from below too); a row
 // PASSES when the kit REJECTS the broken sampler.
-// `alteredSampler` (the same material 10% rougher, registry.h withMismatchedRoughness) enables RoughnessMismatch; without
-// it that control is reported as not applicable (a row with passed = true and a note).
-CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler, const std::string& label,
-                                const BsdfCheckOptions& options, const ProgressCallback& progress = {});
+// `alteredSampler` (the same material 10% rougher, registry.h withMismatchedRoughness) enables
+// RoughnessMismatch; without it that control is reported as not applicable (a row with passed = true and a
+// note).
+CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler,
+                                const std::string& label, const BsdfCheckOptions& options,
+                                const ProgressCallback& progress = {});
 
 // Number of chi-square tests runBsdfChecks will perform with these options (for the
 // Sidak correction when several materials are checked together): the listed angles for a

@@ -45,11 +45,12 @@ auto bsdfDirectionSampler(const Model& model, const Vec3d& wi, TransportMode mod
 }
 
 // The chi-square test of one model at one incident direction.
-template <typename Model>
-ChiSquareResult bsdfChiSquareTest(const Model& model, const Vec3d& wi, const ChiSquareOptions& options,
-                                  TransportMode mode = TransportMode::Radiance) {
-  return sphericalChiSquareTest(bsdfDirectionSampler(model, wi, mode),
-                                [&](const Vec3d& wo) { return model.pdf(wi, wo, mode); }, options);
+template <typename Model> ChiSquareResult bsdfChiSquareTest(const Model& model, const Vec3d& wi,
+                                                            const ChiSquareOptions& options,
+                                                            TransportMode mode = TransportMode::Radiance) {
+  return sphericalChiSquareTest(
+      bsdfDirectionSampler(model, wi, mode), [&](const Vec3d& wo) { return model.pdf(wi, wo, mode); },
+      options);
 }
 
 }  // namespace scatterlab

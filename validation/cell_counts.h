@@ -19,7 +19,7 @@ namespace scatterlab {
 // What one draw produced: the cell it fell into, nothing (the sampler failed: legal, it
 // reduces the mass), or a broken rule (`invalid` says which: always a test failure).
 struct CellDraw {
-  int cell = -1;                  // -1 with invalid == nullptr: the sampler failed
+  int cell = -1;  // -1 with invalid == nullptr: the sampler failed
   const char* invalid = nullptr;
   static CellDraw failed() { return {}; }
 };
@@ -32,7 +32,8 @@ struct CellCounts {
 };
 
 // `draw(CounterRng&) -> CellDraw`, with cells in [0, cellCount).
-template <typename DrawFn> CellCounts countSamples(int cellCount, size_t n, uint64_t seed, const DrawFn& draw) {
+template <typename DrawFn>
+CellCounts countSamples(int cellCount, size_t n, uint64_t seed, const DrawFn& draw) {
   struct Part {
     std::vector<uint64_t> counts;
     size_t failed = 0, invalid = 0, firstInvalidIndex = SIZE_MAX;
@@ -48,7 +49,8 @@ template <typename DrawFn> CellCounts countSamples(int cellCount, size_t n, uint
     for (size_t i = range.begin(); i != range.end(); ++i) {
       CounterRng rng(seed, i);
       const CellDraw d = draw(rng);
-      const char* why = d.invalid ? d.invalid : (d.cell >= cellCount ? "sample outside the binning" : nullptr);
+      const char* why =
+          d.invalid ? d.invalid : (d.cell >= cellCount ? "sample outside the binning" : nullptr);
       if (why) {
         ++part.invalid;
         if (i < part.firstInvalidIndex) {

@@ -28,16 +28,17 @@ std::string formatTable(const CheckReport& report) {
       out += '\n';
       out += current;
       out += '\n';
-      std::snprintf(line, sizeof line, "  %-36s %7s %13s %6s %10s %10s  %s\n", "test", "wi(deg)", "statistic", "dof",
-                    "p-value", "threshold", "result");
+      std::snprintf(line, sizeof line, "  %-36s %7s %13s %6s %10s %10s  %s\n", "test", "wi(deg)", "statistic",
+                    "dof", "p-value", "threshold", "result");
       out += line;
     }
     const std::string wi = row.wiThetaDeg ? std::to_string(*row.wiThetaDeg).substr(0, 5) : "-";
     const std::string dof = row.dof ? std::to_string(*row.dof) : "-";
     char p[32] = "-";
     if (row.pValue) std::snprintf(p, sizeof p, "%.4g", *row.pValue);
-    std::snprintf(line, sizeof line, "  %-36s %7s %13.6g %6s %10s %10.3g  %s  %s\n", row.test.c_str(), wi.c_str(),
-                  row.statistic, dof.c_str(), p, row.threshold, row.passed ? "PASS" : "FAIL", row.note.c_str());
+    std::snprintf(line, sizeof line, "  %-36s %7s %13.6g %6s %10s %10.3g  %s  %s\n", row.test.c_str(),
+                  wi.c_str(), row.statistic, dof.c_str(), p, row.threshold, row.passed ? "PASS" : "FAIL",
+                  row.note.c_str());
     out += line;
   }
   size_t failed = 0;
@@ -50,7 +51,7 @@ std::string formatTable(const CheckReport& report) {
 nlohmann::json toJson(const CheckReport& report) {
   nlohmann::json rows = nlohmann::json::array();
   for (const CheckRow& row : report.rows) {
-    nlohmann::json j = {{"material", row.material}, {"test", row.test},         {"statistic", row.statistic},
+    nlohmann::json j = {{"material", row.material},   {"test", row.test},     {"statistic", row.statistic},
                         {"threshold", row.threshold}, {"passed", row.passed}, {"note", row.note}};
     j["wi_theta_deg"] = row.wiThetaDeg ? nlohmann::json(*row.wiThetaDeg) : nlohmann::json(nullptr);
     j["dof"] = row.dof ? nlohmann::json(*row.dof) : nlohmann::json(nullptr);

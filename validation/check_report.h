@@ -13,15 +13,15 @@ namespace scatterlab {
 // significance, passes when p >= threshold) or a bound check (statistic, threshold, passes
 // when statistic <= threshold).
 struct CheckRow {
-  std::string material;           // the material's label (its JSON, or a showcase name)
-  std::string test;               // "chi2", "consistency", "normalisation", "albedo", ...
+  std::string material;  // the material's label (its JSON, or a showcase name)
+  std::string test;      // "chi2", "consistency", "normalisation", "albedo", ...
   std::optional<double> wiThetaDeg;
   double statistic = 0.0;
   std::optional<int> dof;
   std::optional<double> pValue;
   double threshold = 0.0;
   bool passed = false;
-  std::string note;               // what was compared, or why it failed, in words
+  std::string note;  // what was compared, or why it failed, in words
 };
 
 struct CheckReport {

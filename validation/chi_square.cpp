@@ -22,7 +22,8 @@ void addDelta(std::vector<DeltaDirection>& deltas, const DeltaDirection& d, std:
     if (glm::length(known.w - d.w) > DeltaDirectionTolerance) continue;
     if (mismatch.empty() && relativeDifference(known.probability, d.probability) > 1e-9) {
       std::ostringstream msg;
-      msg << "one delta direction sampled with two probabilities: " << known.probability << " and " << d.probability;
+      msg << "one delta direction sampled with two probabilities: " << known.probability << " and "
+          << d.probability;
       mismatch = msg.str();
     }
     return;
@@ -65,8 +66,8 @@ SampleHistogram mergeHistograms(const SphericalGrid& grid, size_t n,
   for (int i = 0; i < cells; ++i) {
     h.counts.values[i] = double(total.counts[i]);
     if (const uint64_t c = total.continuousCounts[i]) {
-      h.probes[i] = Vec2d(double(total.sumCos[i]) / double(c), double(total.sumPhi[i]) / double(c)) /
-                    FixedPointScale;
+      h.probes[i] =
+          Vec2d(double(total.sumCos[i]) / double(c), double(total.sumPhi[i]) / double(c)) / FixedPointScale;
     }
   }
   h.sampleCount = n;
@@ -156,12 +157,15 @@ ChiSquareResult chiSquareFromTables(const Table2D& observed, const Table2D& expe
 }
 
 ChiSquareResult chiSquareVerdict(const SampleHistogram& histogram, const std::vector<double>& pdfIntegrals,
-                                 const SphericalGrid& grid, size_t sampleCount, double threshold, double minExpected) {
-  ChiSquareResult r = chiSquareFromTables(histogram.counts, expectedCounts(grid, pdfIntegrals, histogram.deltas, sampleCount),
-                                          sampleCount, threshold, minExpected);
+                                 const SphericalGrid& grid, size_t sampleCount, double threshold,
+                                 double minExpected) {
+  ChiSquareResult r =
+      chiSquareFromTables(histogram.counts, expectedCounts(grid, pdfIntegrals, histogram.deltas, sampleCount),
+                          sampleCount, threshold, minExpected);
   if (histogram.invalidSamples > 0) {
     r.passed = false;
-    r.failure = std::to_string(histogram.invalidSamples) + " invalid samples, first: " + histogram.firstInvalid;
+    r.failure =
+        std::to_string(histogram.invalidSamples) + " invalid samples, first: " + histogram.firstInvalid;
   } else if (!histogram.deltaMismatch.empty()) {
     r.passed = false;
     r.failure = histogram.deltaMismatch;

@@ -22,8 +22,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "materials/core/rng.h"
 #include "materials/core/quadrature.h"
+#include "materials/core/rng.h"
 #include "validation/spherical_grid.h"
 
 namespace scatterlab {
@@ -31,9 +31,9 @@ namespace scatterlab {
 // What a sampler under test returns for one draw.
 struct DirectionSample {
   Vec3d w;
-  double pdf = 0.0;          // density per solid angle, or discrete probability if isDelta
+  double pdf = 0.0;  // density per solid angle, or discrete probability if isDelta
   bool isDelta = false;
-  Rgb weight{1.0};           // carried along for energy checks (BSDF: f |cos| / pdf)
+  Rgb weight{1.0};                // carried along for energy checks (BSDF: f |cos| / pdf)
   const char* invalid = nullptr;  // set by an adaptor when the draw broke a rule (NaN weight...)
 };
 
@@ -46,15 +46,15 @@ struct DeltaDirection {
 };
 
 struct SampleHistogram {
-  Table2D counts;                // samples per cell (continuous and delta)
-  std::vector<Vec2d> probes;     // per cell: centroid (cos theta, phi) of its continuous samples, or NaN
+  Table2D counts;             // samples per cell (continuous and delta)
+  std::vector<Vec2d> probes;  // per cell: centroid (cos theta, phi) of its continuous samples, or NaN
   size_t sampleCount = 0;
-  size_t failedSamples = 0;      // sampler returned nothing (legal: reduces the pdf's mass)
-  size_t invalidSamples = 0;     // broke a rule: always a test failure
+  size_t failedSamples = 0;   // sampler returned nothing (legal: reduces the pdf's mass)
+  size_t invalidSamples = 0;  // broke a rule: always a test failure
   size_t deltaSamples = 0;
-  std::string firstInvalid;      // description of the lowest-index invalid sample
+  std::string firstInvalid;            // description of the lowest-index invalid sample
   std::vector<DeltaDirection> deltas;  // distinct delta directions, sorted by cell
-  std::string deltaMismatch;     // one delta direction reported with two probabilities
+  std::string deltaMismatch;           // one delta direction reported with two probabilities
 };
 
 // Two delta samples are the same direction if they agree to this (they come from the same
@@ -137,43 +137,47 @@ template <int N> double scalarPart(const glm::vec<N, double>& v) { return v[0]; 
 // than its facets, reaches 1e-9), below the finest step adaptive Simpson takes in a whole
 // cell. A pole cell whose probe lies at d from the pole is therefore also cut at 4 d, 16 d,
 // 64 d, ... from it, so that the pieces grow geometrically from the lobe's scale.
-template <typename Integrand>
-auto integrateCells(const SphericalGrid& grid, const Integrand& integrand, const std::vector<Vec2d>& probes,
-                    const QuadratureOptions& options) {
+template <typename Integrand> auto integrateCells(const SphericalGrid& grid, const Integrand& integrand,
+                                                  const std::vector<Vec2d>& probes,
+                                                  const QuadratureOptions& options) {
   using V = decltype(integrand(Vec3d(0, 0, 1)));
   std::vector<V> result(grid.cellCount(), V(0.0));
-  tbb::parallel_for(tbb::blocked_range<int>(0, grid.cellCount(), 16), [&](const tbb::blocked_range<int>& range) {
-    for (int cell = range.begin(); cell != range.end(); ++cell) {
-      const int r = cell / grid.phiBins, c = cell % grid.phiBins;
-      constexpr int MaxCosCuts = 40;  // edges, horizon, probe and up to 35 pole cuts (4^35 >> 1/ulp)
-      double cosCuts[MaxCosCuts], phiCuts[3] = {grid.phiEdge(c), 0, 0};
-      int nCos = 0, nPhi = 1;
-      const double cosLo = grid.cosThetaEdge(r), cosHi = grid.cosThetaEdge(r + 1), phiHi = grid.phiEdge(c + 1);
-      const Vec2d probe = probes.empty() ? Vec2d(NAN) : probes[cell];
-      cosCuts[nCos++] = cosLo;
-      if (cosLo < 0.0 && 0.0 < cosHi) cosCuts[nCos++] = 0.0;
-      if (cosLo < probe.x && probe.x < cosHi && probe.x != 0.0) {
-        cosCuts[nCos++] = probe.x;
-        for (const double pole : {-1.0, 1.0}) {
-          if (pole != (pole > 0 ? cosHi : cosLo)) continue;  // the cell does not reach this pole
-          const double toPole = std::abs(pole - probe.x);
-          for (double step = 4 * toPole; step < cosHi - cosLo && nCos < MaxCosCuts - 1; step *= 4)
-            cosCuts[nCos++] = pole > 0 ? pole - step : pole + step;
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, grid.cellCount(), 16), [&](const tbb::blocked_range<int>& range) {
+        for (int cell = range.begin(); cell != range.end(); ++cell) {
+          const int r = cell / grid.phiBins, c = cell % grid.phiBins;
+          constexpr int MaxCosCuts = 40;  // edges, horizon, probe and up to 35 pole cuts (4^35 >> 1/ulp)
+          double cosCuts[MaxCosCuts], phiCuts[3] = {grid.phiEdge(c), 0, 0};
+          int nCos = 0, nPhi = 1;
+          const double cosLo = grid.cosThetaEdge(r), cosHi = grid.cosThetaEdge(r + 1),
+                       phiHi = grid.phiEdge(c + 1);
+          const Vec2d probe = probes.empty() ? Vec2d(NAN) : probes[cell];
+          cosCuts[nCos++] = cosLo;
+          if (cosLo < 0.0 && 0.0 < cosHi) cosCuts[nCos++] = 0.0;
+          if (cosLo < probe.x && probe.x < cosHi && probe.x != 0.0) {
+            cosCuts[nCos++] = probe.x;
+            for (const double pole : {-1.0, 1.0}) {
+              if (pole != (pole > 0 ? cosHi : cosLo)) continue;  // the cell does not reach this pole
+              const double toPole = std::abs(pole - probe.x);
+              for (double step = 4 * toPole; step < cosHi - cosLo && nCos < MaxCosCuts - 1; step *= 4)
+                cosCuts[nCos++] = pole > 0 ? pole - step : pole + step;
+            }
+          }
+          cosCuts[nCos++] = cosHi;
+          std::sort(cosCuts, cosCuts + nCos);
+          if (phiCuts[0] < probe.y && probe.y < phiHi) phiCuts[nPhi++] = probe.y;
+          phiCuts[nPhi++] = phiHi;
+          V sum = V(0.0);
+          for (int i = 0; i + 1 < nCos; ++i)
+            for (int j = 0; j + 1 < nPhi; ++j)
+              sum = sum + adaptiveSimpson2D(
+                              [&](double cosTheta, double phi) {
+                                return integrand(SphericalGrid::direction(cosTheta, phi));
+                              },
+                              cosCuts[i], cosCuts[i + 1], phiCuts[j], phiCuts[j + 1], options);
+          result[cell] = sum;
         }
-      }
-      cosCuts[nCos++] = cosHi;
-      std::sort(cosCuts, cosCuts + nCos);
-      if (phiCuts[0] < probe.y && probe.y < phiHi) phiCuts[nPhi++] = probe.y;
-      phiCuts[nPhi++] = phiHi;
-      V sum = V(0.0);
-      for (int i = 0; i + 1 < nCos; ++i)
-        for (int j = 0; j + 1 < nPhi; ++j)
-          sum = sum + adaptiveSimpson2D(
-                          [&](double cosTheta, double phi) { return integrand(SphericalGrid::direction(cosTheta, phi)); },
-                          cosCuts[i], cosCuts[i + 1], phiCuts[j], phiCuts[j + 1], options);
-      result[cell] = sum;
-    }
-  });
+      });
   return result;
 }
 
@@ -181,10 +185,10 @@ struct ChiSquareResult {
   double statistic = 0.0;
   int dof = 0;
   double pValue = 0.0;
-  double threshold = 0.0;   // significance level the p-value is compared with
+  double threshold = 0.0;  // significance level the p-value is compared with
   bool passed = false;
-  std::string failure;      // set when rejected for a reason other than the p-value
-  int pooledCells = 0;      // cells merged into the low-expectation pool
+  std::string failure;  // set when rejected for a reason other than the p-value
+  int pooledCells = 0;  // cells merged into the low-expectation pool
   Table2D observed, expected;
 };
 
@@ -203,7 +207,7 @@ struct ChiSquareOptions {
   SphericalGrid grid;
   size_t sampleCount = 1'000'000;
   uint64_t seed = 1;
-  double threshold = 0.01;   // per-test significance (already Sidak-corrected by the caller)
+  double threshold = 0.01;  // per-test significance (already Sidak-corrected by the caller)
   double minExpected = 5.0;
   QuadratureOptions quadrature;
 };
@@ -221,9 +225,11 @@ ChiSquareResult chiSquareVerdict(const SampleHistogram& histogram, const std::ve
 
 // The whole test for `draw(CounterRng&) -> optional<DirectionSample>` against `pdf(w)`.
 template <typename DrawFn, typename PdfFn>
-ChiSquareResult sphericalChiSquareTest(const DrawFn& draw, const PdfFn& pdf, const ChiSquareOptions& options) {
+ChiSquareResult sphericalChiSquareTest(const DrawFn& draw, const PdfFn& pdf,
+                                       const ChiSquareOptions& options) {
   const SampleHistogram histogram = drawSamples(options.grid, draw, options.sampleCount, options.seed);
-  const std::vector<double> integrals = integrateCells(options.grid, pdf, histogram.probes, options.quadrature);
+  const std::vector<double> integrals =
+      integrateCells(options.grid, pdf, histogram.probes, options.quadrature);
   return chiSquareVerdict(histogram, integrals, options.grid, options.sampleCount, options.threshold,
                           options.minExpected);
 }

@@ -18,8 +18,9 @@ std::string safeFileStem(const std::string& label) {
   return s;
 }
 
-void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem, const ChiSquareResult& chi,
-                          const std::string& layout, const Table2D* consistencyMaxError, double consistencyTolerance) {
+void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem,
+                          const ChiSquareResult& chi, const std::string& layout,
+                          const Table2D* consistencyMaxError, double consistencyTolerance) {
   std::filesystem::create_directories(dir);
   double peak = 0;
   for (size_t i = 0; i < chi.observed.values.size(); ++i)
@@ -32,8 +33,10 @@ void writeChiSquareImages(const std::filesystem::path& dir, const std::string& s
     residual.values[i] = e > 0 ? (o - e) / std::sqrt(e) : (o > 0 ? INFINITY : 0.0);
   }
   writeHeatmapPng(dir / (stem + "_residual.png"), residual, HeatmapScale::Diverging, 5.0);
-  nlohmann::json tables = {{"rows", chi.observed.rows},         {"cols", chi.observed.cols},
-                           {"layout", layout},                  {"observed", chi.observed.values},
+  nlohmann::json tables = {{"rows", chi.observed.rows},
+                           {"cols", chi.observed.cols},
+                           {"layout", layout},
+                           {"observed", chi.observed.values},
                            {"expected", chi.expected.values}};
   if (consistencyMaxError) {
     writeHeatmapPng(dir / (stem + "_consistency.png"), *consistencyMaxError, HeatmapScale::Sequential,

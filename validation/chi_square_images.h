@@ -19,8 +19,8 @@ std::string safeFileStem(const std::string& label);
 // `dir` (created if missing; files written atomically). With `consistencyMaxError`, also
 // STEM_consistency.png (scaled so that `consistencyTolerance` sits a tenth of the way up) and
 // its table.
-void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem, const ChiSquareResult& chi,
-                          const std::string& layout, const Table2D* consistencyMaxError = nullptr,
-                          double consistencyTolerance = 0.0);
+void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem,
+                          const ChiSquareResult& chi, const std::string& layout,
+                          const Table2D* consistencyMaxError = nullptr, double consistencyTolerance = 0.0);
 
 }  // namespace scatterlab

@@ -39,8 +39,8 @@ struct ConsistencyResult {
   size_t supportProbes = 0;
   size_t supportViolations = 0;  // directions with eval > 0 but pdf == 0
   std::string firstFailure;
-  Table2D maxErrorPerCell;       // the worst error of the samples landing in each cell
-  Rgb albedoMean{0.0};           // mean weight (failures count 0): importance-sampled albedo
+  Table2D maxErrorPerCell;  // the worst error of the samples landing in each cell
+  Rgb albedoMean{0.0};      // mean weight (failures count 0): importance-sampled albedo
   Rgb albedoStdError{0.0};
   bool passed() const { return inconsistentSamples == 0 && supportViolations == 0; }
 };
@@ -80,9 +80,10 @@ ConsistencyResult checkConsistency(const Model& model, const Vec3d& wi, const Sp
           acc.sumSquares += s->weight * s->weight;
           if (s->isDelta()) continue;  // eval and pdf are 0 for delta lobes by convention
           const double pdf = model.pdf(wi, s->wo, mode);
-          const Rgb expectedWeight = pdf > 0 ? model.eval(wi, s->wo, mode) * std::abs(s->wo.z) / pdf : Rgb(INFINITY);
+          const Rgb expectedWeight =
+              pdf > 0 ? model.eval(wi, s->wo, mode) * std::abs(s->wo.z) / pdf : Rgb(INFINITY);
           const double weightError = consistencyError(s->weight, expectedWeight);
-          const double pdfError = consistencyError(s->pdf, pdf) ;
+          const double pdfError = consistencyError(s->pdf, pdf);
           acc.maxWeightError = std::max(acc.maxWeightError, weightError);
           acc.maxPdfError = std::max(acc.maxPdfError, pdfError);
           const double worst = std::max(weightError, pdfError);
@@ -93,9 +94,10 @@ ConsistencyResult checkConsistency(const Model& model, const Vec3d& wi, const Sp
             if (i < acc.firstFailureIndex) {
               acc.firstFailureIndex = i;
               if (weightError >= pdfError)
-                detail::describeInconsistency(acc.firstFailure, i, s->wo, "weight (max channel)",
-                                              std::max({s->weight.x, s->weight.y, s->weight.z}),
-                                              std::max({expectedWeight.x, expectedWeight.y, expectedWeight.z}));
+                detail::describeInconsistency(
+                    acc.firstFailure, i, s->wo, "weight (max channel)",
+                    std::max({s->weight.x, s->weight.y, s->weight.z}),
+                    std::max({expectedWeight.x, expectedWeight.y, expectedWeight.z}));
               else
                 detail::describeInconsistency(acc.firstFailure, i, s->wo, "pdf", s->pdf, pdf);
             }
@@ -120,7 +122,8 @@ ConsistencyResult checkConsistency(const Model& model, const Vec3d& wi, const Sp
           CounterRng rng(~seed, i);
           const Vec3d wo = sampleUniformSphere(rng.uniform2D());
           const Rgb f = model.eval(wi, wo, mode);
-          if ((f.x >= Reflects || f.y >= Reflects || f.z >= Reflects) && !(model.pdf(wi, wo, mode) > 0)) ++count;
+          if ((f.x >= Reflects || f.y >= Reflects || f.z >= Reflects) && !(model.pdf(wi, wo, mode) > 0))
+            ++count;
         }
         return count;
       },

@@ -7,7 +7,8 @@ double normalisationTolerance(double failureProbability, size_t samples) {
   return std::max(1e-3, 4.0 * std::sqrt(p * (1.0 - p) / double(std::max<size_t>(samples, 1))));
 }
 
-EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals, const SampleHistogram& histogram) {
+EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals,
+                                 const SampleHistogram& histogram) {
   EnergyResult r;
   glm::dvec4 total(0.0);
   for (const glm::dvec4& v : cellIntegrals) total += v;

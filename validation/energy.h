@@ -20,19 +20,20 @@ auto bsdfEnergyIntegrand(const Model& model, const Vec3d& wi, TransportMode mode
 }
 
 struct EnergyResult {
-  double pdfIntegral = 0.0;          // integral of pdf() over the sphere
-  double deltaProbability = 0.0;     // total discrete probability of the delta directions seen
-  double failureProbability = 0.0;   // fraction of sample() calls that returned nothing
-  double normalisationError = 0.0;   // |pdfIntegral + deltaProbability - (1 - failureProbability)|
+  double pdfIntegral = 0.0;         // integral of pdf() over the sphere
+  double deltaProbability = 0.0;    // total discrete probability of the delta directions seen
+  double failureProbability = 0.0;  // fraction of sample() calls that returned nothing
+  double normalisationError = 0.0;  // |pdfIntegral + deltaProbability - (1 - failureProbability)|
   double normalisationTolerance = 0.0;
-  Rgb albedo{0.0};                   // integral of f |cos wo| (quadrature) + delta lobes
+  Rgb albedo{0.0};  // integral of f |cos wo| (quadrature) + delta lobes
 };
 
 // Tolerance of the normalisation check: 1e-3 (VALIDATION.md), widened to 4 standard errors
 // of the estimated failure probability when that is the larger (binomial noise).
 double normalisationTolerance(double failureProbability, size_t samples);
 
-EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals, const SampleHistogram& histogram);
+EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals,
+                                 const SampleHistogram& histogram);
 
 // The pdf part of the cell integrals as a vector of scalars (for expectedCounts).
 std::vector<double> pdfPart(const std::vector<glm::dvec4>& cellIntegrals);

@@ -23,15 +23,16 @@ HalfSpaceWalkResult simulateHalfSpace(const HalfSpaceWalkSettings& settings, con
   std::atomic<uint64_t> done{0};
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<uint64_t>(0, chunks, 1), [&](const tbb::blocked_range<uint64_t>& range) {
-      HalfSpaceTally& tally = tallies.local();
-      for (uint64_t chunk = range.begin(); chunk != range.end(); ++chunk) {
-        const uint64_t first = chunk * ChunkPaths, last = std::min(first + ChunkPaths, settings.paths);
-        traceHalfSpacePaths(settings, first, last, tally);
-        const uint64_t finished = done.fetch_add(last - first) + (last - first);
-        if (progress) progress(double(finished) / double(settings.paths));
-      }
-    });
+    tbb::parallel_for(
+        tbb::blocked_range<uint64_t>(0, chunks, 1), [&](const tbb::blocked_range<uint64_t>& range) {
+          HalfSpaceTally& tally = tallies.local();
+          for (uint64_t chunk = range.begin(); chunk != range.end(); ++chunk) {
+            const uint64_t first = chunk * ChunkPaths, last = std::min(first + ChunkPaths, settings.paths);
+            traceHalfSpacePaths(settings, first, last, tally);
+            const uint64_t finished = done.fetch_add(last - first) + (last - first);
+            if (progress) progress(double(finished) / double(settings.paths));
+          }
+        });
   });
   // Integer sums: the same whatever the threads' order.
   HalfSpaceTally total(annuli);

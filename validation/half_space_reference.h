@@ -15,6 +15,7 @@ using WalkProgress = std::function<void(double fraction)>;
 
 // Traces settings.paths paths on settings.threads threads (0: all cores); the same result for
 // any thread count. Throws std::invalid_argument naming a setting out of range.
-HalfSpaceWalkResult simulateHalfSpace(const HalfSpaceWalkSettings& settings, const WalkProgress& progress = {});
+HalfSpaceWalkResult simulateHalfSpace(const HalfSpaceWalkSettings& settings,
+                                      const WalkProgress& progress = {});
 
 }  // namespace scatterlab

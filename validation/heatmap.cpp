@@ -26,9 +26,13 @@ template <size_t N> Colour ramp(const std::array<Colour, N>& stops, double t) {
 }
 
 // Five stops sampled from matplotlib's viridis (perceptually uniform, colour-blind safe).
-constexpr std::array<Colour, 5> Viridis{{{0.267, 0.005, 0.329}, {0.229, 0.322, 0.546}, {0.128, 0.567, 0.551},
-                                         {0.369, 0.789, 0.383}, {0.993, 0.906, 0.144}}};
-constexpr std::array<Colour, 3> BlueWhiteRed{{{0.230, 0.299, 0.754}, {0.97, 0.97, 0.97}, {0.706, 0.016, 0.150}}};
+constexpr std::array<Colour, 5> Viridis{{{0.267, 0.005, 0.329},
+                                         {0.229, 0.322, 0.546},
+                                         {0.128, 0.567, 0.551},
+                                         {0.369, 0.789, 0.383},
+                                         {0.993, 0.906, 0.144}}};
+constexpr std::array<Colour, 3> BlueWhiteRed{
+    {{0.230, 0.299, 0.754}, {0.97, 0.97, 0.97}, {0.706, 0.016, 0.150}}};
 
 Colour colourOf(double v, HeatmapScale scale, double limit) {
   if (!std::isfinite(v)) return {1.0, 0.0, 1.0};  // magenta: a value that should not exist
@@ -37,7 +41,8 @@ Colour colourOf(double v, HeatmapScale scale, double limit) {
   return ramp(BlueWhiteRed, 0.5 + 0.5 * v / limit);
 }
 
-void writePng(const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb) {
+void writePng(const std::filesystem::path& path, int width, int height,
+              const std::vector<unsigned char>& rgb) {
   FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) throw std::runtime_error("cannot open " + path.string() + " for writing");
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -48,8 +53,8 @@ void writePng(const std::filesystem::path& path, int width, int height, const st
     throw std::runtime_error("libpng failed writing " + path.string());
   }
   png_init_io(png, file);
-  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   for (int y = 0; y < height; ++y)
     png_write_row(png, const_cast<png_bytep>(rgb.data() + size_t(y) * width * 3));
@@ -60,18 +65,20 @@ void writePng(const std::filesystem::path& path, int width, int height, const st
 
 }  // namespace
 
-void writeHeatmapPng(const std::filesystem::path& path, const Table2D& table, HeatmapScale scale, double limit,
-                     int cellPixels) {
+void writeHeatmapPng(const std::filesystem::path& path, const Table2D& table, HeatmapScale scale,
+                     double limit, int cellPixels) {
   const int width = table.cols * cellPixels, height = table.rows * cellPixels;
   std::vector<unsigned char> rgb(size_t(width) * height * 3);
   for (int y = 0; y < height; ++y) {
     const int row = table.rows - 1 - y / cellPixels;  // cos(theta) = 1 at the top
     for (int x = 0; x < width; ++x) {
       const Colour c = colourOf(table(row, x / cellPixels), scale, limit);
-      for (int k = 0; k < 3; ++k) rgb[(size_t(y) * width + x) * 3 + k] = (unsigned char)(std::lround(c[k] * 255.0));
+      for (int k = 0; k < 3; ++k)
+        rgb[(size_t(y) * width + x) * 3 + k] = (unsigned char)(std::lround(c[k] * 255.0));
     }
   }
-  writeFileAtomically(path, [&](const std::filesystem::path& temporary) { writePng(temporary, width, height, rgb); });
+  writeFileAtomically(
+      path, [&](const std::filesystem::path& temporary) { writePng(temporary, width, height, rgb); });
 }
 
 }  // namespace scatterlab

@@ -16,7 +16,7 @@ enum class HeatmapScale {
 
 // Writes `table` as an 8-bit RGB PNG, each cell `cellPixels` wide and tall, cos(theta) = 1
 // at the top. `limit` is the value mapped to the end of the scale.
-void writeHeatmapPng(const std::filesystem::path& path, const Table2D& table, HeatmapScale scale, double limit,
-                     int cellPixels = 4);
+void writeHeatmapPng(const std::filesystem::path& path, const Table2D& table, HeatmapScale scale,
+                     double limit, int cellPixels = 4);
 
 }  // namespace scatterlab

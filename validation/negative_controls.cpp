@@ -50,10 +50,15 @@ Vec3d balancedSplitNormal(const BsdfModel& model, const Vec3d& wi) {
 class BrokenSampler final : public BsdfModel {
  public:
   BrokenSampler(NegativeControl control, const BsdfModel& model, const BsdfModel& sampler, const Vec3d& wi)
-      : control_(control), model_(model), sampler_(sampler),
-        splitNormal_(control == NegativeControl::PdfHighOnHalf ? balancedSplitNormal(model, wi) : Vec3d(0, 1, 0)) {}
+      : control_(control),
+        model_(model),
+        sampler_(sampler),
+        splitNormal_(control == NegativeControl::PdfHighOnHalf ? balancedSplitNormal(model, wi)
+                                                               : Vec3d(0, 1, 0)) {}
 
-  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override { return model_.eval(wi, wo, mode); }
+  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
+    return model_.eval(wi, wo, mode);
+  }
 
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
     switch (control_) {
@@ -65,15 +70,14 @@ class BrokenSampler final : public BsdfModel {
         const double len = glm::length(h);
         return len > 0 ? model_.pdf(wi, wo, mode) * 4.0 * std::abs(glm::dot(wo, h / len)) : 0.0;
       }
-      case NegativeControl::SwappedDirections:
-        return model_.pdf(wo, wi, mode);
-      case NegativeControl::RoughnessMismatch:
-        return model_.pdf(wi, wo, mode);
+      case NegativeControl::SwappedDirections: return model_.pdf(wo, wi, mode);
+      case NegativeControl::RoughnessMismatch: return model_.pdf(wi, wo, mode);
     }
     return 0.0;
   }
 
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode mode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode mode) const override {
     std::optional<BsdfSample> s = sampler_.sample(wi, uLobe, u, mode);
     if (!s || s->isDelta()) return s;
     s->pdf = pdf(wi, s->wo, mode);
@@ -117,8 +121,7 @@ std::optional<std::string> negativeControlIsNoOp(NegativeControl control, const 
       return "not applicable: this pdf is symmetric in wi and wo, so the swap changes nothing";
     case NegativeControl::RoughnessMismatch:
       return "not applicable: the altered sampler draws the same directions (roughness at its range limit?)";
-    default:
-      return "not applicable: the broken pdf equals the model's where the model samples";
+    default: return "not applicable: the broken pdf equals the model's where the model samples";
   }
 }
 
@@ -133,14 +136,15 @@ std::string toString(NegativeControl control) {
 }
 
 std::vector<NegativeControl> allNegativeControls() {
-  return {NegativeControl::PdfHighOnHalf, NegativeControl::MissingJacobian, NegativeControl::SwappedDirections,
-          NegativeControl::RoughnessMismatch};
+  return {NegativeControl::PdfHighOnHalf, NegativeControl::MissingJacobian,
+          NegativeControl::SwappedDirections, NegativeControl::RoughnessMismatch};
 }
 
-std::unique_ptr<BsdfModel> makeNegativeControl(NegativeControl control, const BsdfModel& model, const Vec3d& wi,
-                                               const BsdfModel* alteredSampler) {
+std::unique_ptr<BsdfModel> makeNegativeControl(NegativeControl control, const BsdfModel& model,
+                                               const Vec3d& wi, const BsdfModel* alteredSampler) {
   if (control == NegativeControl::RoughnessMismatch) {
-    if (!alteredSampler) throw std::invalid_argument("the roughness-mismatch control needs the altered sampler model");
+    if (!alteredSampler)
+      throw std::invalid_argument("the roughness-mismatch control needs the altered sampler model");
     return std::make_unique<BrokenSampler>(control, model, *alteredSampler, wi);
   }
   return std::make_unique<BrokenSampler>(control, model, model, wi);

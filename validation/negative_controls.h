@@ -14,11 +14,11 @@
 namespace scatterlab {
 
 enum class NegativeControl {
-  PdfHighOnHalf,     // pdf() 5% too high on half the sphere: the half, through the lobe's mean
-                     // direction, that holds about half of the samples at the given wi
-  MissingJacobian,   // pdf() lacks the half-vector Jacobian 1/(4 |wo.h|)
-  SwappedDirections, // pdf() evaluated as pdf(wo, wi)
-  RoughnessMismatch, // sample() drawn from a model whose alpha is 10% off pdf()'s
+  PdfHighOnHalf,      // pdf() 5% too high on half the sphere: the half, through the lobe's mean
+                      // direction, that holds about half of the samples at the given wi
+  MissingJacobian,    // pdf() lacks the half-vector Jacobian 1/(4 |wo.h|)
+  SwappedDirections,  // pdf() evaluated as pdf(wo, wi)
+  RoughnessMismatch,  // sample() drawn from a model whose alpha is 10% off pdf()'s
 };
 std::string toString(NegativeControl control);
 std::vector<NegativeControl> allNegativeControls();
@@ -34,7 +34,7 @@ std::optional<std::string> negativeControlIsNoOp(NegativeControl control, const 
 // its half from the samples there). RoughnessMismatch needs the model whose sampler is used
 // (same material, alpha 10% different), built by the caller (the registry knows the
 // parameters). `model` and `alteredSampler` must outlive the result.
-std::unique_ptr<BsdfModel> makeNegativeControl(NegativeControl control, const BsdfModel& model, const Vec3d& wi,
-                                               const BsdfModel* alteredSampler = nullptr);
+std::unique_ptr<BsdfModel> makeNegativeControl(NegativeControl control, const BsdfModel& model,
+                                               const Vec3d& wi, const BsdfModel* alteredSampler = nullptr);
 
 }  // namespace scatterlab

@@ -11,15 +11,15 @@ namespace scatterlab {
 int PolarGrid::cellIndex(const Vec2d& p) const {
   const double rho = std::hypot(p.x, p.y);
   if (!(rho < ringEdges.back())) return outsideCell();
-  const int ring = std::clamp(int(std::upper_bound(ringEdges.begin(), ringEdges.end(), rho) - ringEdges.begin()) - 1,
-                              0, rings() - 1);
+  const int ring = std::clamp(
+      int(std::upper_bound(ringEdges.begin(), ringEdges.end(), rho) - ringEdges.begin()) - 1, 0, rings() - 1);
   const double phi = std::atan2(p.y, p.x);
   const int sector = std::clamp(int(std::floor((phi + Pi) / (2.0 * Pi) * sectors)), 0, sectors - 1);
   return ring * sectors + sector;
 }
 
-std::vector<double> planarExpectedCounts(const std::function<double(const Vec2d&)>& pdf, const PolarGrid& grid,
-                                         size_t sampleCount) {
+std::vector<double> planarExpectedCounts(const std::function<double(const Vec2d&)>& pdf,
+                                         const PolarGrid& grid, size_t sampleCount) {
   std::vector<double> expected(size_t(grid.cellCount()), 0.0);
   QuadratureOptions options;
   options.relativeTolerance = 1e-7;
@@ -33,7 +33,8 @@ std::vector<double> planarExpectedCounts(const std::function<double(const Vec2d&
     // The first ring starts at 1e-12 of its radius: rho pdf stays bounded at 0 (densities
     // diverge at most like 1 / rho), so what is left out is ~1e-12 of the ring.
     const double inner = ring == 0 ? 1e-12 * outer : grid.ringEdges[size_t(ring)];
-    const double phi0 = -Pi + 2.0 * Pi * sector / grid.sectors, phi1 = -Pi + 2.0 * Pi * (sector + 1) / grid.sectors;
+    const double phi0 = -Pi + 2.0 * Pi * sector / grid.sectors,
+                 phi1 = -Pi + 2.0 * Pi * (sector + 1) / grid.sectors;
     // The quadrature's end points stay 1e-12 inside the ring: a density that jumps exactly on a
     // ring edge (the probe's r_max) must not be sampled on the wrong side of it by round-off,
     // or the error estimate never shrinks there. What is left out is ~1e-12 of the ring.
@@ -50,7 +51,8 @@ std::vector<double> planarExpectedCounts(const std::function<double(const Vec2d&
 }
 
 ChiSquareResult planarChiSquareVerdict(const CellCounts& counts, const std::vector<double>& expected,
-                                       const PolarGrid& grid, size_t sampleCount, double threshold, double minExpected) {
+                                       const PolarGrid& grid, size_t sampleCount, double threshold,
+                                       double minExpected) {
   // rings x sectors, and a last row whose first cell is the outside cell.
   Table2D observed(grid.rings() + 1, grid.sectors), expectedTable(grid.rings() + 1, grid.sectors);
   for (int cell = 0; cell < grid.cellCount(); ++cell) {

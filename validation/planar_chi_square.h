@@ -37,13 +37,14 @@ struct PlanarChiSquareOptions {
 };
 
 // Per cell (the outside cell: 0): N * integral over the cell of pdf(p) dA.
-std::vector<double> planarExpectedCounts(const std::function<double(const Vec2d&)>& pdf, const PolarGrid& grid,
-                                         size_t sampleCount);
+std::vector<double> planarExpectedCounts(const std::function<double(const Vec2d&)>& pdf,
+                                         const PolarGrid& grid, size_t sampleCount);
 
 // The verdict for counted samples and expected counts (tables laid out rings x sectors, plus
 // a last row holding the outside cell).
 ChiSquareResult planarChiSquareVerdict(const CellCounts& counts, const std::vector<double>& expected,
-                                       const PolarGrid& grid, size_t sampleCount, double threshold, double minExpected);
+                                       const PolarGrid& grid, size_t sampleCount, double threshold,
+                                       double minExpected);
 
 // `draw(CounterRng&) -> std::optional<Vec2d>` (a point, or nothing when sampling failed).
 template <typename DrawFn>

@@ -41,14 +41,16 @@ PolarGrid probePolarGrid(const ProbeSampler& sampler, const RadialProfile& profi
     return sum;
   };
   std::vector<double> edges{0.0, outer};
-  for (int k = 1; k < rings; ++k) edges.push_back(bisectIncreasing(mixture, double(k) / rings, 0.0, outer, 1e-12 * outer));
+  for (int k = 1; k < rings; ++k)
+    edges.push_back(bisectIncreasing(mixture, double(k) / rings, 0.0, outer, 1e-12 * outer));
   for (int c = 0; c < 3; ++c)
     if (s.channelProbability[c] > 0) edges.push_back(sampler.maxRadius(c));
   std::sort(edges.begin(), edges.end());
   PolarGrid grid;
   grid.sectors = sectors;
   for (double e : edges)
-    if (grid.ringEdges.empty() || e > grid.ringEdges.back() * (1.0 + 1e-9) + 1e-300) grid.ringEdges.push_back(e);
+    if (grid.ringEdges.empty() || e > grid.ringEdges.back() * (1.0 + 1e-9) + 1e-300)
+      grid.ringEdges.push_back(e);
   return grid;
 }
 

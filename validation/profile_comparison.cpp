@@ -11,13 +11,14 @@ namespace scatterlab {
 
 namespace {
 
-constexpr ProfileModel Models[] = {ProfileModel::Dipole, ProfileModel::BetterDipole, ProfileModel::BeamDiffusion,
-                                   ProfileModel::Burley};
+constexpr ProfileModel Models[] = {ProfileModel::Dipole, ProfileModel::BetterDipole,
+                                   ProfileModel::BeamDiffusion, ProfileModel::Burley};
 
 // The power a walk tally puts beyond its last edge, per path.
 double walkBeyond(const HalfSpaceWalkResult& walk, bool multipleOnly) {
   uint64_t inside = 0, escaped = walk.escaped;
-  for (size_t k = 0; k < walk.counts.size(); ++k) inside += walk.counts[k] - (multipleOnly ? walk.singleCounts[k] : 0);
+  for (size_t k = 0; k < walk.counts.size(); ++k)
+    inside += walk.counts[k] - (multipleOnly ? walk.singleCounts[k] : 0);
   if (multipleOnly) escaped -= walk.singleEscaped;
   return double(escaped - inside) / double(walk.settings.paths);
 }
@@ -30,7 +31,8 @@ const ModelComparison& ProfileComparison::find(ProfileModel model) const {
   throw std::out_of_range("profile comparison: model not compared");
 }
 
-ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium, const ProfileComparisonOptions& options,
+ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium,
+                                          const ProfileComparisonOptions& options,
                                           const WalkProgress& progress) {
   medium.validate();
   ProfileComparison out;
@@ -40,7 +42,8 @@ ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium, const 
   for (const ProfileModel model : Models) {
     profiles.push_back(makeProfile(model, medium, options.burleyFit));
     for (int c = 0; c < 3; ++c)
-      if (profiles.back()->totalReflectance()[c] > 0) largest = std::max(largest, profiles.back()->sampleRadius(c, 0.999));
+      if (profiles.back()->totalReflectance()[c] > 0)
+        largest = std::max(largest, profiles.back()->sampleRadius(c, 0.999));
   }
   if (!(largest > 0)) throw std::invalid_argument("profile comparison: no channel reflects");
   out.edges = logRadiusEdges(2e-3 * largest, 2.0 * largest, options.annuli);
@@ -56,8 +59,8 @@ ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium, const 
     s.paths = options.paths;
     s.seed = deriveSeed(options.seed, uint64_t(c));
     s.threads = options.threads;
-    out.walks[size_t(c)] = simulateHalfSpace(s, progress ? WalkProgress([&](double f) { progress((c + f) / 3.0); })
-                                                         : WalkProgress());
+    out.walks[size_t(c)] = simulateHalfSpace(
+        s, progress ? WalkProgress([&](double f) { progress((c + f) / 3.0); }) : WalkProgress());
     const HalfSpaceWalkResult& w = out.walks[size_t(c)];
     out.walkTotal[c] = w.totalReflectance;
     out.walkStdError[c] = w.totalStdError;
@@ -75,8 +78,11 @@ ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium, const 
     for (int c = 0; c < 3; ++c) {
       const HalfSpaceWalkResult& w = out.walks[size_t(c)];
       const std::vector<double> means = annulusMeans(profile, c, out.edges);
-      const double beyond = e.total[c] > 0 ? e.total[c] * (1.0 - profile.radiusCdf(c, out.edges.back())) : 0.0;
-      const auto relative = [](double model, double reference) { return reference > 0 ? model / reference - 1.0 : 0.0; };
+      const double beyond =
+          e.total[c] > 0 ? e.total[c] * (1.0 - profile.radiusCdf(c, out.edges.back())) : 0.0;
+      const auto relative = [](double model, double reference) {
+        return reference > 0 ? model / reference - 1.0 : 0.0;
+      };
       e.totalError[c] = relative(e.total[c], out.walkTotal[c]);
       e.multipleTotalError[c] = relative(e.total[c], out.walkMultipleTotal[c]);
       e.profileError[c] = radialRelativeError(out.edges, means, w.profile, beyond, walkBeyond(w, false));

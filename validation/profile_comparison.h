@@ -24,7 +24,7 @@ struct ProfileComparisonOptions {
   uint64_t paths = 1'000'000;  // per channel
   uint64_t seed = 1;
   int threads = 0;
-  int annuli = 24;             // log-spaced, after [0, first] (`scatterlab profile --bins`)
+  int annuli = 24;  // log-spaced, after [0, first] (`scatterlab profile --bins`)
   BurleyFit burleyFit = BurleyFit::Searchlight;
 };
 
@@ -45,17 +45,18 @@ struct ProfileComparison {
   ScatteringMedium medium;
   std::vector<double> edges;  // annuli (mm): 0, then `annuli` log-spaced edges
   std::array<HalfSpaceWalkResult, 3> walks;
-  Rgb walkTotal{0.0}, walkStdError{0.0};             // all orders
+  Rgb walkTotal{0.0}, walkStdError{0.0};                  // all orders
   Rgb walkMultipleTotal{0.0}, walkMultipleStdError{0.0};  // scattered at least twice
   Rgb noiseFloor{0.0};  // what the walk's noise alone reads as a profile error (radialNoiseFloor)
-  std::vector<ModelComparison> models;               // dipole, better-dipole, beam-diffusion, burley
+  std::vector<ModelComparison> models;  // dipole, better-dipole, beam-diffusion, burley
 
   const ModelComparison& find(ProfileModel model) const;
 };
 
 // The edges reach twice the largest radius that holds 99.9% of any model's profile in any
 // channel; 1/1000 of that is the first. Throws std::invalid_argument for an invalid medium.
-ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium, const ProfileComparisonOptions& options,
+ProfileComparison compareProfilesWithWalk(const ScatteringMedium& medium,
+                                          const ProfileComparisonOptions& options,
                                           const WalkProgress& progress = {});
 
 }  // namespace scatterlab

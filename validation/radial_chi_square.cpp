@@ -32,7 +32,8 @@ double integrateRadialDensity(const std::function<double(double)>& pdf, double a
       std::log(a), std::log(b), options);
 }
 
-double integrateAlongQuantiles(const std::function<double(double)>& f, const std::function<double(double)>& quantile) {
+double integrateAlongQuantiles(const std::function<double(double)>& f,
+                               const std::function<double(double)>& quantile) {
   const std::vector<double> edges = equalProbabilityEdges(quantile, 8);
   const double far = quantile(1.0 - 1e-12);
   double sum = 0.0;
@@ -40,12 +41,13 @@ double integrateAlongQuantiles(const std::function<double(double)>& f, const std
   return sum;
 }
 
-std::vector<double> radialExpectedCounts(const std::function<double(double)>& pdf, const std::vector<double>& edges,
-                                         double far, size_t sampleCount) {
+std::vector<double> radialExpectedCounts(const std::function<double(double)>& pdf,
+                                         const std::vector<double>& edges, double far, size_t sampleCount) {
   const int bins = int(edges.size()) - 1;
   std::vector<double> expected(size_t(bins), 0.0);
   tbb::parallel_for(0, bins, [&](int b) {
-    expected[size_t(b)] = double(sampleCount) * integrateRadialDensity(pdf, edges[size_t(b)], edges[size_t(b) + 1], far);
+    expected[size_t(b)] =
+        double(sampleCount) * integrateRadialDensity(pdf, edges[size_t(b)], edges[size_t(b) + 1], far);
   });
   return expected;
 }

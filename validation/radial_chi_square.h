@@ -35,17 +35,19 @@ double integrateRadialDensity(const std::function<double(double)>& pdf, double a
 // integral_0^inf f(r) dr for an f with the scale of the distribution `quantile` describes:
 // the sum over the pieces between its octiles (the last up to its 1 - 1e-12 quantile), each
 // by integrateRadialDensity, so that no piece's range of ln r is set by a far-away end.
-double integrateAlongQuantiles(const std::function<double(double)>& f, const std::function<double(double)>& quantile);
+double integrateAlongQuantiles(const std::function<double(double)>& f,
+                               const std::function<double(double)>& quantile);
 
 // Expected counts per bin: N * integral of pdf.
-std::vector<double> radialExpectedCounts(const std::function<double(double)>& pdf, const std::vector<double>& edges,
-                                         double far, size_t sampleCount);
+std::vector<double> radialExpectedCounts(const std::function<double(double)>& pdf,
+                                         const std::vector<double>& edges, double far, size_t sampleCount);
 
 // `draw(CounterRng&) -> std::optional<double>` (a radius, or nothing when sampling failed);
 // radii that are negative or not finite are invalid samples.
-template <typename DrawFn>
-ChiSquareResult radialChiSquareTest(const DrawFn& draw, const std::function<double(double)>& pdf,
-                                    const std::vector<double>& edges, double far, const RadialChiSquareOptions& options) {
+template <typename DrawFn> ChiSquareResult radialChiSquareTest(const DrawFn& draw,
+                                                               const std::function<double(double)>& pdf,
+                                                               const std::vector<double>& edges, double far,
+                                                               const RadialChiSquareOptions& options) {
   const int bins = int(edges.size()) - 1;
   const CellCounts counts = countSamples(bins, options.sampleCount, options.seed, [&](CounterRng& rng) {
     const std::optional<double> r = draw(rng);
@@ -57,7 +59,8 @@ ChiSquareResult radialChiSquareTest(const DrawFn& draw, const std::function<doub
   Table2D observed(1, bins), expected(1, bins);
   for (int b = 0; b < bins; ++b) observed.values[size_t(b)] = double(counts.counts[size_t(b)]);
   expected.values = radialExpectedCounts(pdf, edges, far, options.sampleCount);
-  ChiSquareResult r = chiSquareFromTables(observed, expected, options.sampleCount, options.threshold, options.minExpected);
+  ChiSquareResult r =
+      chiSquareFromTables(observed, expected, options.sampleCount, options.threshold, options.minExpected);
   if (counts.invalid > 0) {
     r.passed = false;
     r.failure = std::to_string(counts.invalid) + " invalid samples, first: " + counts.firstInvalid;

@@ -13,9 +13,9 @@ ReciprocityResult makeReciprocityResult(size_t pairs, size_t violations, double 
   if (maxError > 0) {
     std::ostringstream msg;
     msg.precision(9);
-    msg << "worst pair wi=(" << wi.x << ", " << wi.y << ", " << wi.z << ") wo=(" << wo.x << ", " << wo.y << ", "
-        << wo.z << "): f(wi,wo)=(" << forward.x << ", " << forward.y << ", " << forward.z << ") f(wo,wi)=("
-        << backward.x << ", " << backward.y << ", " << backward.z << ")";
+    msg << "worst pair wi=(" << wi.x << ", " << wi.y << ", " << wi.z << ") wo=(" << wo.x << ", " << wo.y
+        << ", " << wo.z << "): f(wi,wo)=(" << forward.x << ", " << forward.y << ", " << forward.z
+        << ") f(wo,wi)=(" << backward.x << ", " << backward.y << ", " << backward.z << ")";
     r.worst = msg.str();
   }
   return r;

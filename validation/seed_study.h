@@ -16,7 +16,7 @@ namespace scatterlab {
 
 struct SeedStudyResult {
   int runs = 0;
-  int rejected = 0;          // runs with p < alpha
+  int rejected = 0;  // runs with p < alpha
   double alpha = 0.0;
   std::vector<double> pValues;
   // Kolmogorov-Smirnov distance of the p-values from U(0, 1).
@@ -25,7 +25,8 @@ struct SeedStudyResult {
     std::sort(p.begin(), p.end());
     const double n = double(p.size());
     double d = 0;
-    for (size_t i = 0; i < p.size(); ++i) d = std::max({d, std::abs(p[i] - double(i) / n), std::abs(p[i] - double(i + 1) / n)});
+    for (size_t i = 0; i < p.size(); ++i)
+      d = std::max({d, std::abs(p[i] - double(i) / n), std::abs(p[i] - double(i + 1) / n)});
     return d;
   }
   // Standard deviations of the rejection count from its binomial mean runs * alpha.
@@ -39,8 +40,8 @@ struct SeedStudyResult {
 // expected counts are integrated once (they depend on the pdf alone), guided by the probes
 // of the first run's histogram so that narrow lobes are found.
 template <typename DrawFn, typename PdfFn>
-SeedStudyResult repeatedSeedStudy(const DrawFn& draw, const PdfFn& pdf, const SphericalGrid& grid, size_t samples,
-                                  int runs, double alpha, uint64_t seedBase) {
+SeedStudyResult repeatedSeedStudy(const DrawFn& draw, const PdfFn& pdf, const SphericalGrid& grid,
+                                  size_t samples, int runs, double alpha, uint64_t seedBase) {
   SeedStudyResult study;
   study.runs = runs;
   study.alpha = alpha;

@@ -59,7 +59,9 @@ CheckRow controlRow(const std::string& label, const std::string& test, const Chi
 bool reflects(const RadialProfile& profile, int channel) { return profile.totalReflectance()[channel] > 0; }
 
 // The radius beyond which a channel holds less than 1e-12 of its distribution.
-double farRadius(const RadialProfile& profile, int channel) { return profile.sampleRadius(channel, 1.0 - 1e-12); }
+double farRadius(const RadialProfile& profile, int channel) {
+  return profile.sampleRadius(channel, 1.0 - 1e-12);
+}
 
 double profileEnergy(const RadialProfile& profile, int channel) {
   return integrateAlongQuantiles([&](double r) { return 2.0 * Pi * r * profile.eval(r)[channel]; },
@@ -94,15 +96,16 @@ RadiusConsistency radiusConsistency(const RadialProfile& profile, int channel, s
   return result;
 }
 
-void maybeWriteImages(const SubsurfaceCheckOptions& options, const std::string& label, const std::string& test,
-                      const ChiSquareResult& chi, const std::string& layout) {
+void maybeWriteImages(const SubsurfaceCheckOptions& options, const std::string& label,
+                      const std::string& test, const ChiSquareResult& chi, const std::string& layout) {
   if (options.imageDir && (!options.imagesOnFailureOnly || !chi.passed))
     writeChiSquareImages(*options.imageDir, safeFileStem(label + "_" + test), chi, layout);
 }
 
 double threshold(const SubsurfaceCheckOptions& options, const RadialProfile& profile) {
-  return sidakSignificance(options.alpha, options.chiSquareTestCount > 0 ? options.chiSquareTestCount
-                                                                         : subsurfaceChiSquareTestCount(profile));
+  return sidakSignificance(options.alpha, options.chiSquareTestCount > 0
+                                              ? options.chiSquareTestCount
+                                              : subsurfaceChiSquareTestCount(profile));
 }
 
 }  // namespace
@@ -113,8 +116,8 @@ int subsurfaceChiSquareTestCount(const RadialProfile& profile) {
   return count;
 }
 
-ChiSquareResult radiusChiSquare(const RadialProfile& sampled, const RadialProfile& claimed, int channel, int bins,
-                                size_t samples, uint64_t seed, double threshold) {
+ChiSquareResult radiusChiSquare(const RadialProfile& sampled, const RadialProfile& claimed, int channel,
+                                int bins, size_t samples, uint64_t seed, double threshold) {
   RadialChiSquareOptions options;
   options.sampleCount = samples;
   options.seed = seed;
@@ -126,9 +129,9 @@ ChiSquareResult radiusChiSquare(const RadialProfile& sampled, const RadialProfil
       [&](double r) { return claimed.radiusPdf(channel, r); }, edges, farRadius(claimed, channel), options);
 }
 
-ProbeChiSquareResult probeChiSquare(const ProbeSampler& sampler, const RadialProfile& profile, ProbeFrame frame,
-                                    const std::function<double(const Vec2d&)>& pdf, int rings, int sectors,
-                                    size_t samples, uint64_t seed, double threshold) {
+ProbeChiSquareResult probeChiSquare(const ProbeSampler& sampler, const RadialProfile& profile,
+                                    ProbeFrame frame, const std::function<double(const Vec2d&)>& pdf,
+                                    int rings, int sectors, size_t samples, uint64_t seed, double threshold) {
   const Framed axes = probeFrame(frame);
   const PolarGrid grid = probePolarGrid(sampler, profile, rings, sectors);
   const CellCounts counts = countSamples(grid.cellCount(), samples, seed, [&](CounterRng& rng) {
@@ -162,57 +165,65 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
     report(std::string("radius ") + ChannelNames[c]);
     if (!reflects(profile, c)) {
       out.rows.push_back(boundRow(label, "profile energy" + channel, std::abs(profileEnergy(profile, c)),
-                                  ProfileEnergyTolerance, "the channel reflects nothing: no radius distribution"));
+                                  ProfileEnergyTolerance,
+                                  "the channel reflects nothing: no radius distribution"));
       continue;
     }
     const double energy = profileEnergy(profile, c);
-    out.rows.push_back(boundRow(label, "profile energy" + channel, std::abs(energy - total[c]), ProfileEnergyTolerance,
+    out.rows.push_back(boundRow(label, "profile energy" + channel, std::abs(energy - total[c]),
+                                ProfileEnergyTolerance,
                                 format("quadrature %.8f vs closed form %.8f", energy, total[c])));
     const uint64_t seed = deriveSeed(options.seed, uint64_t(c));
-    const ChiSquareResult radius = radiusChiSquare(profile, profile, c, options.radiusBins, options.samples, seed, alpha);
+    const ChiSquareResult radius =
+        radiusChiSquare(profile, profile, c, options.radiusBins, options.samples, seed, alpha);
     out.rows.push_back(chiSquareRow(label, "radius chi2" + channel, radius));
     maybeWriteImages(options, label, std::string("radius_") + ChannelNames[c], radius,
                      "one row: radius bins equal in the radius CDF, from r = 0 outward");
     const RadiusConsistency consistency =
         radiusConsistency(profile, c, std::min(options.samples, ConsistencySamples), seed);
-    out.rows.push_back(boundRow(label, "radius consistency" + channel,
-                                std::max(consistency.maxPdfError, consistency.maxWeightError), ConsistencyTolerance,
-                                format("max pdf error %.2e, max weight error %.2e (pdf vs 2 pi r R / Rd, weight vs Rd)",
-                                       consistency.maxPdfError, consistency.maxWeightError)));
-    out.rows.push_back(boundRow(label, "radius inverse" + channel, consistency.maxInverseError, RadiusInverseTolerance,
-                                "max |cdf(sample(u)) - u|"));
+    out.rows.push_back(
+        boundRow(label, "radius consistency" + channel,
+                 std::max(consistency.maxPdfError, consistency.maxWeightError), ConsistencyTolerance,
+                 format("max pdf error %.2e, max weight error %.2e (pdf vs 2 pi r R / Rd, weight vs Rd)",
+                        consistency.maxPdfError, consistency.maxWeightError)));
+    out.rows.push_back(boundRow(label, "radius inverse" + channel, consistency.maxInverseError,
+                                RadiusInverseTolerance, "max |cdf(sample(u)) - u|"));
   }
   const double directional = directionalIntegral(bssrdf);
-  out.rows.push_back(boundRow(label, "directional normalisation", std::abs(directional - 1.0),
-                              DirectionalNormalisationTolerance,
-                              format("integral of Ft cos / (pi c) = %.10f, c = %.6f", directional, bssrdf.normalization())));
+  out.rows.push_back(boundRow(
+      label, "directional normalisation", std::abs(directional - 1.0), DirectionalNormalisationTolerance,
+      format("integral of Ft cos / (pi c) = %.10f, c = %.6f", directional, bssrdf.normalization())));
   const ProbeSampler sampler(profile);
   for (const ProbeFrame frame : {ProbeFrame::Aligned, ProbeFrame::Tilted}) {
     report(std::string("probe ") + toString(frame));
     const Framed axes = probeFrame(frame);
     const ProbeChiSquareResult probe = probeChiSquare(
         sampler, profile, frame, [&](const Vec2d& p) { return probeExitPdfOnPlane(sampler, axes, p); },
-        options.probeRings, options.probeSectors, options.samples, deriveSeed(options.seed, 10 + uint64_t(frame)), alpha);
-    out.rows.push_back(chiSquareRow(label, std::string("probe chi2 (") + toString(frame) + " frame)", probe.chiSquare));
-    maybeWriteImages(options, label, std::string("probe_") + toString(frame), probe.chiSquare,
-                     "row-major; rows: rings around the entry point from the centre outward (equal in the radial CDF, "
-                     "with every channel's r_max as an edge); cols: sectors from phi = -pi; last row: its first cell "
-                     "is the plane beyond the outer ring");
+        options.probeRings, options.probeSectors, options.samples,
+        deriveSeed(options.seed, 10 + uint64_t(frame)), alpha);
+    out.rows.push_back(
+        chiSquareRow(label, std::string("probe chi2 (") + toString(frame) + " frame)", probe.chiSquare));
+    maybeWriteImages(
+        options, label, std::string("probe_") + toString(frame), probe.chiSquare,
+        "row-major; rows: rings around the entry point from the centre outward (equal in the radial CDF, "
+        "with every channel's r_max as an edge); cols: sectors from phi = -pi; last row: its first cell "
+        "is the plane beyond the outer ring");
     // The hit rate is binomial: its standard error bounds how well it can match the integral.
     const double standardError =
         std::sqrt(std::max(probe.hitFraction * (1.0 - probe.hitFraction), 1e-12) / double(options.samples));
-    out.rows.push_back(boundRow(
-        label, std::string("probe normalisation (") + toString(frame) + " frame)",
-        std::abs(probe.pdfIntegral - probe.hitFraction), std::max(1e-3, 4.0 * standardError),
-        format("integral of the pdf %.6f vs fraction of probes that found the plane %.6f", probe.pdfIntegral,
-               probe.hitFraction)));
+    out.rows.push_back(
+        boundRow(label, std::string("probe normalisation (") + toString(frame) + " frame)",
+                 std::abs(probe.pdfIntegral - probe.hitFraction), std::max(1e-3, 4.0 * standardError),
+                 format("integral of the pdf %.6f vs fraction of probes that found the plane %.6f",
+                        probe.pdfIntegral, probe.hitFraction)));
   }
   if (progress) progress("done", 1.0);
   return out;
 }
 
 CheckReport runSubsurfaceNegativeControls(const RadialProfile& profile, const std::string& label,
-                                          const SubsurfaceCheckOptions& options, const ProgressCallback& progress) {
+                                          const SubsurfaceCheckOptions& options,
+                                          const ProgressCallback& progress) {
   const double alpha = threshold(options, profile);
   CheckReport out;
   const ProbeSampler sampler(profile);
@@ -231,28 +242,30 @@ CheckReport runSubsurfaceNegativeControls(const RadialProfile& profile, const st
         const RadiusPdfHighOnHalf broken(profile);
         for (int c = 0; c < 3; ++c)
           if (reflects(profile, c))
-            out.rows.push_back(controlRow(
-                label, test + " (" + ChannelNames[c] + ")",
-                radiusChiSquare(profile, broken, c, options.radiusBins, options.samples, seed + uint64_t(c), alpha)));
+            out.rows.push_back(controlRow(label, test + " (" + ChannelNames[c] + ")",
+                                          radiusChiSquare(profile, broken, c, options.radiusBins,
+                                                          options.samples, seed + uint64_t(c), alpha)));
         break;
       }
       case SubsurfaceControl::WrongChannelWeights: {
         const ProbeSampler claimed(profile, skewedChannelWeights(sampler.sampling()));
-        out.rows.push_back(controlRow(
-            label, test,
-            probeChiSquare(sampler, profile, ProbeFrame::Tilted,
-                           [&](const Vec2d& p) { return probeExitPdfOnPlane(claimed, tilted, p); }, options.probeRings,
-                           options.probeSectors, options.samples, seed, alpha)
-                .chiSquare));
+        out.rows.push_back(
+            controlRow(label, test,
+                       probeChiSquare(
+                           sampler, profile, ProbeFrame::Tilted,
+                           [&](const Vec2d& p) { return probeExitPdfOnPlane(claimed, tilted, p); },
+                           options.probeRings, options.probeSectors, options.samples, seed, alpha)
+                           .chiSquare));
         break;
       }
       case SubsurfaceControl::RadialShortcut:
-        out.rows.push_back(controlRow(
-            label, test,
-            probeChiSquare(sampler, profile, ProbeFrame::Tilted,
+        out.rows.push_back(
+            controlRow(label, test,
+                       probeChiSquare(
+                           sampler, profile, ProbeFrame::Tilted,
                            [&](const Vec2d& p) { return radialShortcutPdf(sampler, p); }, options.probeRings,
                            options.probeSectors, options.samples, seed, alpha)
-                .chiSquare));
+                           .chiSquare));
         break;
     }
   }

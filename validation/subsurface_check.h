@@ -25,16 +25,16 @@ struct SubsurfaceCheckOptions {
   int probeRings = 32;
   int probeSectors = 32;
   uint64_t seed = 1;
-  double alpha = 0.01;          // family-wise, Sidak-corrected over every chi-square test
-  int chiSquareTestCount = 0;   // tests in the whole suite; 0: this run's count
+  double alpha = 0.01;         // family-wise, Sidak-corrected over every chi-square test
+  int chiSquareTestCount = 0;  // tests in the whole suite; 0: this run's count
   // Observed / expected / residual maps and tables of every chi-square test (chi_square_images.h).
   std::optional<std::filesystem::path> imageDir;
   bool imagesOnFailureOnly = false;
 };
 
 // Tolerances of the deterministic rows.
-inline constexpr double ProfileEnergyTolerance = 1e-4;       // |quadrature - closed form|
-inline constexpr double RadiusInverseTolerance = 1e-10;      // |F(r(u)) - u|
+inline constexpr double ProfileEnergyTolerance = 1e-4;   // |quadrature - closed form|
+inline constexpr double RadiusInverseTolerance = 1e-10;  // |F(r(u)) - u|
 inline constexpr double DirectionalNormalisationTolerance = 1e-6;
 
 // Chi-square tests runSubsurfaceChecks performs: one per reflecting channel, two probe tests.
@@ -46,24 +46,25 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
 // The controls of subsurface_negative_controls.h; a row PASSES when the kit REJECTS the broken
 // sampler (or, with a note, when the control cannot differ for this profile).
 CheckReport runSubsurfaceNegativeControls(const RadialProfile& profile, const std::string& label,
-                                          const SubsurfaceCheckOptions& options, const ProgressCallback& progress = {});
+                                          const SubsurfaceCheckOptions& options,
+                                          const ProgressCallback& progress = {});
 
 // ---- The kit functions the rows are made of (the tests call them directly) ----
 
 // Radii drawn from `sampled` (channel c) against `claimed`'s radius pdf, in `bins` bins equal
 // in claimed's CDF.
-ChiSquareResult radiusChiSquare(const RadialProfile& sampled, const RadialProfile& claimed, int channel, int bins,
-                                size_t samples, uint64_t seed, double threshold);
+ChiSquareResult radiusChiSquare(const RadialProfile& sampled, const RadialProfile& claimed, int channel,
+                                int bins, size_t samples, uint64_t seed, double threshold);
 
 struct ProbeChiSquareResult {
   ChiSquareResult chiSquare;
-  double pdfIntegral = 0.0;   // integral of the claimed pdf over the plane
-  double hitFraction = 0.0;   // probes that found the plane
+  double pdfIntegral = 0.0;  // integral of the claimed pdf over the plane
+  double hitFraction = 0.0;  // probes that found the plane
 };
 // Exit points of `sampler`'s probes (frame `frame`) on the plane, against `pdf` per unit area;
 // a found point where pdf is 0 is an invalid sample.
-ProbeChiSquareResult probeChiSquare(const ProbeSampler& sampler, const RadialProfile& profile, ProbeFrame frame,
-                                    const std::function<double(const Vec2d&)>& pdf, int rings, int sectors,
-                                    size_t samples, uint64_t seed, double threshold);
+ProbeChiSquareResult probeChiSquare(const ProbeSampler& sampler, const RadialProfile& profile,
+                                    ProbeFrame frame, const std::function<double(const Vec2d&)>& pdf,
+                                    int rings, int sectors, size_t samples, uint64_t seed, double threshold);
 
 }  // namespace scatterlab

@@ -28,9 +28,10 @@ struct TransportModesResult {
 namespace detail {
 // What is wrong with one pair of samples drawn with the same numbers, or nothing. `error`
 // receives the weight relation's consistencyError when both samples exist.
-template <typename Model>
-const char* transportModesMismatch(const Model& model, const Vec3d& wi, const std::optional<BsdfSample>& importance,
-                                   const std::optional<BsdfSample>& radiance, double& error) {
+template <typename Model> const char* transportModesMismatch(const Model& model, const Vec3d& wi,
+                                                             const std::optional<BsdfSample>& importance,
+                                                             const std::optional<BsdfSample>& radiance,
+                                                             double& error) {
   error = 0.0;
   if (importance.has_value() != radiance.has_value()) return "sample() fails in one transport mode only";
   if (!importance) return nullptr;

@@ -17,11 +17,12 @@ std::vector<AlbedoPoint> directionalAlbedoCurve(const BsdfModel& model, const st
   std::vector<AlbedoPoint> curve;
   for (size_t k = 0; k < thetaDeg.size(); ++k) {
     const Vec3d wi = directionFromDegrees(thetaDeg[k], options.phiDeg);
-    const SampleHistogram histogram =
-        drawSamples(grid, bsdfDirectionSampler(model, wi, mode), options.probeSamples, deriveSeed(options.seed, k));
+    const SampleHistogram histogram = drawSamples(grid, bsdfDirectionSampler(model, wi, mode),
+                                                  options.probeSamples, deriveSeed(options.seed, k));
     // f |cos wo| only: the pdf the kit integrates alongside is not needed here.
     const auto cells = integrateCells(
-        grid, [&](const Vec3d& wo) { return model.eval(wi, wo, mode) * std::abs(wo.z); }, histogram.probes, quadrature);
+        grid, [&](const Vec3d& wo) { return model.eval(wi, wo, mode) * std::abs(wo.z); }, histogram.probes,
+        quadrature);
     AlbedoPoint point{thetaDeg[k], Rgb(0.0)};
     for (const Rgb& cell : cells) point.albedo += cell;
     for (const DeltaDirection& delta : histogram.deltas) point.albedo += delta.probability * delta.weight;

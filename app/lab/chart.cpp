@@ -49,7 +49,10 @@ size_t Chart::dataPointCount() const {
 json Chart::toJson() const {
   json seriesJson = json::array();
   for (const ChartSeries& s : series) {
-    json entry{{"label", s.label}, {"color", s.color}, {"style", styleName(s.style)}, {"points", pointsJson(*this, s.points)}};
+    json entry{{"label", s.label},
+               {"color", s.color},
+               {"style", styleName(s.style)},
+               {"points", pointsJson(*this, s.points)}};
     if (!s.bandLower.empty())
       entry["band"] = {{"lower", pointsJson(*this, s.bandLower)}, {"upper", pointsJson(*this, s.bandUpper)}};
     seriesJson.push_back(std::move(entry));

@@ -53,7 +53,8 @@ std::vector<MapSet> findMaps(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir, error)) {
     const std::string name = entry.path().filename().string();
     const std::string suffix = "_observed.png";
-    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
     MapSet set;
     set.stem = name.substr(0, name.size() - suffix.size());
     set.consistency = fs::exists(dir / (set.stem + "_consistency.png"));
@@ -62,27 +63,31 @@ std::vector<MapSet> findMaps(const fs::path& dir) {
     if (parsed.is_object()) set.layout = parsed.value("layout", std::string());
     maps.push_back(std::move(set));
   }
-  std::sort(maps.begin(), maps.end(), [](const MapSet& a, const MapSet& b) { return naturalLess(a.stem, b.stem); });
+  std::sort(maps.begin(), maps.end(),
+            [](const MapSet& a, const MapSet& b) { return naturalLess(a.stem, b.stem); });
   return maps;
 }
 
 std::string verdictCell(bool passed) {
-  return html::textElement("td", passed ? "PASS" : "FAIL", {{"class", passed ? "verdict pass" : "verdict fail"}});
+  return html::textElement("td", passed ? "PASS" : "FAIL",
+                           {{"class", passed ? "verdict pass" : "verdict fail"}});
 }
 
 std::string rowsTable(const CheckReport& report, bool controls) {
   std::string head;
-  for (const char* column : {"test", "wi (deg)", "statistic", "dof", "p-value", "threshold", "verdict", "note"})
+  for (const char* column :
+       {"test", "wi (deg)", "statistic", "dof", "p-value", "threshold", "verdict", "note"})
     head += html::textElement("th", column);
   std::string body;
   for (const CheckRow& row : report.rows) {
-    std::string cells = html::textElement("td", row.test) +
-                        html::textElement("td", row.wiThetaDeg ? html::number(*row.wiThetaDeg) : "-", {{"class", "num"}}) +
-                        html::textElement("td", html::number(row.statistic), {{"class", "num"}}) +
-                        html::textElement("td", row.dof ? std::to_string(*row.dof) : "-", {{"class", "num"}}) +
-                        html::textElement("td", row.pValue ? html::number(*row.pValue) : "-", {{"class", "num"}}) +
-                        html::textElement("td", html::number(row.threshold), {{"class", "num"}}) +
-                        verdictCell(row.passed) + html::textElement("td", row.note, {{"class", "note"}});
+    std::string cells =
+        html::textElement("td", row.test) +
+        html::textElement("td", row.wiThetaDeg ? html::number(*row.wiThetaDeg) : "-", {{"class", "num"}}) +
+        html::textElement("td", html::number(row.statistic), {{"class", "num"}}) +
+        html::textElement("td", row.dof ? std::to_string(*row.dof) : "-", {{"class", "num"}}) +
+        html::textElement("td", row.pValue ? html::number(*row.pValue) : "-", {{"class", "num"}}) +
+        html::textElement("td", html::number(row.threshold), {{"class", "num"}}) + verdictCell(row.passed) +
+        html::textElement("td", row.note, {{"class", "note"}});
     body += html::element("tr", cells, {{"class", row.passed ? "" : "failed"}});
   }
   return html::element("table",
@@ -91,9 +96,10 @@ std::string rowsTable(const CheckReport& report, bool controls) {
 }
 
 std::string mapFigure(const std::string& src, const std::string& caption) {
-  return html::element("figure", html::voidElement("img", {{"src", src}, {"alt", caption}}) +
-                                     html::textElement("figcaption", caption),
-                       {{"class", "map"}});
+  return html::element(
+      "figure",
+      html::voidElement("img", {{"src", src}, {"alt", caption}}) + html::textElement("figcaption", caption),
+      {{"class", "map"}});
 }
 
 std::string mapsHtml(const LabMaterial& material, const fs::path& checkDir, bool open) {
@@ -102,24 +108,28 @@ std::string mapsHtml(const LabMaterial& material, const fs::path& checkDir, bool
   std::string body;
   for (const MapSet& set : maps) {
     const std::string base = material.folder + "/check/" + set.stem;
-    std::string figures = mapFigure(base + "_observed.png", "observed") + mapFigure(base + "_expected.png", "expected") +
+    std::string figures = mapFigure(base + "_observed.png", "observed") +
+                          mapFigure(base + "_expected.png", "expected") +
                           mapFigure(base + "_residual.png", "residual (O - E) / sqrt(E)");
     if (set.consistency) figures += mapFigure(base + "_consistency.png", "consistency error");
-    body += html::element("div",
-                          html::textElement("h4", set.stem) + html::element("div", figures, {{"class", "maps"}}) +
-                              (set.layout.empty() ? "" : html::textElement("p", "cells: " + set.layout, {{"class", "small"}})),
-                          {{"class", "map-set"}});
+    body += html::element(
+        "div",
+        html::textElement("h4", set.stem) + html::element("div", figures, {{"class", "maps"}}) +
+            (set.layout.empty() ? "" : html::textElement("p", "cells: " + set.layout, {{"class", "small"}})),
+        {{"class", "map-set"}});
   }
-  const std::string summary = "Chi-square maps: " + std::to_string(maps.size()) +
-                              " tests (observed and expected counts share a viridis scale; residuals blue below, red "
-                              "above the expectation, clamped at 5 sigma; magenta: a cell that must be empty but is not)";
-  return html::element("details", html::textElement("summary", summary) + body, open ? html::Attributes{{"open", "open"}} : html::Attributes{});
+  const std::string summary =
+      "Chi-square maps: " + std::to_string(maps.size()) +
+      " tests (observed and expected counts share a viridis scale; residuals blue below, red "
+      "above the expectation, clamped at 5 sigma; magenta: a cell that must be empty but is not)";
+  return html::element("details", html::textElement("summary", summary) + body,
+                       open ? html::Attributes{{"open", "open"}} : html::Attributes{});
 }
 
 }  // namespace
 
-CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settings, const fs::path& materialDir,
-                          const ProgressCallback& progress) {
+CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settings,
+                          const fs::path& materialDir, const ProgressCallback& progress) {
   BsdfCheckOptions kit = settings.kit;
   kit.imageDir = materialDir / "check";
   kit.chiSquareTestCount = 0;  // this material's tests only (see the header)
@@ -129,7 +139,8 @@ CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settin
     const SubsurfaceCheckOptions options = subsurfaceCheckOptions(kit);
     outcome.report = runSubsurfaceChecks(material.subsurface->bssrdf(), material.name, options, progress);
     if (settings.negativeControls)
-      outcome.controls = runSubsurfaceNegativeControls(*material.subsurface->profile, material.name, options, progress);
+      outcome.controls =
+          runSubsurfaceNegativeControls(*material.subsurface->profile, material.name, options, progress);
     return outcome;
   }
   outcome.report = runBsdfChecks(*material.bsdf, material.name, kit, progress);
@@ -151,14 +162,15 @@ std::string verdictText(const CheckOutcome& outcome) {
                      : std::to_string(failed) + " of " + std::to_string(total) + " checks fail";
 }
 
-ReportSection checkSection(const LabMaterial& material, const CheckOutcome& outcome, const fs::path& materialDir) {
+ReportSection checkSection(const LabMaterial& material, const CheckOutcome& outcome,
+                           const fs::path& materialDir) {
   ReportSection section;
   section.id = "check";
   section.title = "Verdict of the statistical kit";
   const bool passed = outcome.passed();
-  std::string html = html::element(
-      "p", html::textElement("span", passed ? "PASS" : "FAIL", {{"class", passed ? "badge pass" : "badge fail"}}) + " " +
-               html::escape(verdictText(outcome)));
+  std::string html = html::element("p", html::textElement("span", passed ? "PASS" : "FAIL",
+                                                          {{"class", passed ? "badge pass" : "badge fail"}}) +
+                                            " " + html::escape(verdictText(outcome)));
   if (!passed) {
     CheckReport failing;
     for (const CheckReport* report : {&outcome.report, &outcome.controls})
@@ -169,8 +181,9 @@ ReportSection checkSection(const LabMaterial& material, const CheckOutcome& outc
   }
   html += rowsTable(outcome.report, false);
   if (!outcome.controls.rows.empty())
-    html += html::textElement("h4", "Negative controls: deliberately broken samplers, which the kit must reject "
-                                    "(a row passes when its chi-square test rejects)") +
+    html += html::textElement("h4",
+                              "Negative controls: deliberately broken samplers, which the kit must reject "
+                              "(a row passes when its chi-square test rejects)") +
             rowsTable(outcome.controls, true);
   html += mapsHtml(material, materialDir / "check", !passed);
   section.html = std::move(html);

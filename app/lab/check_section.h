@@ -16,8 +16,9 @@
 namespace scatterlab {
 
 struct CheckOutcome {
-  CheckReport report;    // the kit's rows
-  CheckReport controls;  // negative controls (full mode): a row passes when the kit rejects the broken sampler
+  CheckReport report;  // the kit's rows
+  CheckReport
+      controls;  // negative controls (full mode): a row passes when the kit rejects the broken sampler
   bool passed() const { return report.passed() && controls.passed(); }
 };
 

@@ -25,61 +25,69 @@ std::optional<double> truthOf(const LabMaterial& material, const FitModel& model
   const auto& components = model.components();
   if (material.groundTruth.size() != components.size()) return std::nullopt;
   const json& truth = material.groundTruth[p.component];
-  if (truth.value("type", std::string()) != components[p.component].type || !truth.contains(p.key)) return std::nullopt;
+  if (truth.value("type", std::string()) != components[p.component].type || !truth.contains(p.key))
+    return std::nullopt;
   const json& value = truth[p.key];
   if (value.is_number()) return value.get<double>();
-  if (value.is_array() && p.channel >= 0 && size_t(p.channel) < value.size()) return value[size_t(p.channel)].get<double>();
+  if (value.is_array() && p.channel >= 0 && size_t(p.channel) < value.size())
+    return value[size_t(p.channel)].get<double>();
   return std::nullopt;
 }
 
-std::string relativeErrorText(const FitResult& r) {
-  return html::rgb(r.relativeError);
-}
+std::string relativeErrorText(const FitResult& r) { return html::rgb(r.relativeError); }
 
 std::string summaryTable(const MaterialFits& fits) {
   std::string head;
-  for (const char* column : {"model family", "parameters", "relative error (r, g, b)", "rms (r, g, b)", "iterations",
-                             "seconds", "fit"})
+  for (const char* column : {"model family", "parameters", "relative error (r, g, b)", "rms (r, g, b)",
+                             "iterations", "seconds", "fit"})
     head += html::textElement("th", column);
   std::string body;
   for (const FamilyFit& f : fits.families) {
     const FitResult& r = f.result;
-    body += html::element(
-        "tr",
-        html::element("td", html::textElement("b", f.name) + html::element("br", "") + html::textElement("code", f.spec)) +
-            html::textElement("td", std::to_string(r.parameters.size()), {{"class", "num"}}) +
-            html::textElement("td", relativeErrorText(r), {{"class", "num"}}) +
-            html::textElement("td", html::rgb(r.rms),
-                              {{"class", "num"}}) +
-            html::textElement("td", std::to_string(r.final.iterations), {{"class", "num"}}) +
-            html::textElement("td", html::number(r.seconds, 3), {{"class", "num"}}) +
-            html::textElement("td", f.verdict.good ? "GOOD" : "POOR",
-                              {{"class", f.verdict.good ? "verdict pass" : "verdict fail"}}),
-        {{"class", f.verdict.good ? "" : "failed"}});
+    body +=
+        html::element("tr",
+                      html::element("td", html::textElement("b", f.name) + html::element("br", "") +
+                                              html::textElement("code", f.spec)) +
+                          html::textElement("td", std::to_string(r.parameters.size()), {{"class", "num"}}) +
+                          html::textElement("td", relativeErrorText(r), {{"class", "num"}}) +
+                          html::textElement("td", html::rgb(r.rms), {{"class", "num"}}) +
+                          html::textElement("td", std::to_string(r.final.iterations), {{"class", "num"}}) +
+                          html::textElement("td", html::number(r.seconds, 3), {{"class", "num"}}) +
+                          html::textElement("td", f.verdict.good ? "GOOD" : "POOR",
+                                            {{"class", f.verdict.good ? "verdict pass" : "verdict fail"}}),
+                      {{"class", f.verdict.good ? "" : "failed"}});
   }
-  return html::element("table", html::element("thead", html::element("tr", head)) + html::element("tbody", body),
+  return html::element("table",
+                       html::element("thead", html::element("tr", head)) + html::element("tbody", body),
                        {{"class", "rows fits"}});
 }
 
 std::string parameterTable(const LabMaterial& material, const FamilyFit& f) {
   bool anyTruth = false;
-  for (const FitParameter& p : f.model->parameters()) anyTruth = anyTruth || truthOf(material, *f.model, p).has_value();
+  for (const FitParameter& p : f.model->parameters())
+    anyTruth = anyTruth || truthOf(material, *f.model, p).has_value();
   std::string head;
-  for (const char* column : {"parameter", "value", "+- std dev", "range"}) head += html::textElement("th", column);
-  if (anyTruth) head += html::textElement("th", "ground truth") + html::textElement("th", "(value - truth) / std dev");
+  for (const char* column : {"parameter", "value", "+- std dev", "range"})
+    head += html::textElement("th", column);
+  if (anyTruth)
+    head += html::textElement("th", "ground truth") + html::textElement("th", "(value - truth) / std dev");
   std::string body;
   for (size_t k = 0; k < f.result.parameters.size(); ++k) {
     const ParameterEstimate& e = f.result.parameters[k];
-    const auto bound = [](double x) { return std::abs(x) >= 1e300 ? std::string("inf") : html::number(x, 3); };
-    std::string cells = html::textElement("td", e.name + (e.atBound ? " (at bound)" : "")) +
-                        html::textElement("td", html::number(e.value, 5), {{"class", "num"}}) +
-                        html::textElement("td", html::number(e.standardDeviation, 2), {{"class", "num"}}) +
-                        html::textElement("td", "[" + bound(e.lower) + ", " + bound(e.upper) + "]", {{"class", "num"}});
+    const auto bound = [](double x) {
+      return std::abs(x) >= 1e300 ? std::string("inf") : html::number(x, 3);
+    };
+    std::string cells =
+        html::textElement("td", e.name + (e.atBound ? " (at bound)" : "")) +
+        html::textElement("td", html::number(e.value, 5), {{"class", "num"}}) +
+        html::textElement("td", html::number(e.standardDeviation, 2), {{"class", "num"}}) +
+        html::textElement("td", "[" + bound(e.lower) + ", " + bound(e.upper) + "]", {{"class", "num"}});
     if (anyTruth) {
       const auto truth = truthOf(material, *f.model, f.model->parameters()[k]);
       cells += html::textElement("td", truth ? html::number(*truth, 5) : "-", {{"class", "num"}});
       cells += html::textElement(
-          "td", truth && e.standardDeviation > 0 ? html::number((e.value - *truth) / e.standardDeviation, 3) : "-",
+          "td",
+          truth && e.standardDeviation > 0 ? html::number((e.value - *truth) / e.standardDeviation, 3) : "-",
           {{"class", "num"}});
     }
     body += html::element("tr", cells);
@@ -89,7 +97,8 @@ std::string parameterTable(const LabMaterial& material, const FamilyFit& f) {
   for (const std::string& direction : f.result.unidentified)
     notes += "Rank deficient: " + direction + " cannot be determined from the data. ";
   for (const std::string& problem : f.verdict.problems) notes += "POOR: " + problem + ". ";
-  return html::element("table", html::element("thead", html::element("tr", head)) + html::element("tbody", body),
+  return html::element("table",
+                       html::element("thead", html::element("tr", head)) + html::element("tbody", body),
                        {{"class", "rows parameters"}}) +
          (notes.empty() ? "" : html::textElement("p", notes, {{"class", "note"}}));
 }
@@ -108,11 +117,14 @@ Chart sliceChart(const std::string& id, const MeasuredSlice& slice, const Family
   for (size_t i = 0; i < std::size(SliceThetaDiffDeg); ++i) {
     const int d = thetaDiffCellAt(SliceThetaDiffDeg[i]);
     const std::string label = "theta_d " + html::degrees(thetaDiffCentreDeg(d));
-    chart.series.push_back({label + " data", paletteColor(i), SeriesStyle::Points, sliceAlongThetaHalf(slice, d), {}, {}});
+    chart.series.push_back(
+        {label + " data", paletteColor(i), SeriesStyle::Points, sliceAlongThetaHalf(slice, d), {}, {}});
     ChartSeries curve{label + " fit", paletteColor(i), SeriesStyle::Line, {}, {}, {}};
     for (int h = 0; h < merl::ThetaHalfCells; ++h) {
-      const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(h + 0.5), 0.0, merl::thetaDiffAt(d + 0.5), phiDiff);
-      if (wi.z > 0 && wo.z > 0) curve.points.push_back({thetaHalfCentreDeg(h), rec709Luminance(evaluateFit(f, wi, wo))});
+      const auto [wi, wo] =
+          directionsFromHalfDiff(merl::thetaHalfAt(h + 0.5), 0.0, merl::thetaDiffAt(d + 0.5), phiDiff);
+      if (wi.z > 0 && wo.z > 0)
+        curve.points.push_back({thetaHalfCentreDeg(h), rec709Luminance(evaluateFit(f, wi, wo))});
     }
     chart.series.push_back(std::move(curve));
   }
@@ -127,7 +139,8 @@ Rgb evaluateFit(const FamilyFit& fit, const Vec3d& wi, const Vec3d& wo) {
   return {value[0], value[1], value[2]};
 }
 
-MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& settings, const ProgressCallback& progress) {
+MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& settings,
+                         const ProgressCallback& progress) {
   MaterialFits fits;
   MerlSampleCounts counts;
   const BrdfSamples all = samplesFromMerl(*material.table, &counts);
@@ -168,23 +181,27 @@ ReportSection fitSection(const LabMaterial& material, const LabSettings& setting
   section.id = "fits";
   section.title = "Fits of the classic models";
   const MeasuredSlice slice = sliceAtPhiDiff(*material.table, settings.slicePhiDiffDeg);
-  std::string html = html::textElement(
-      "p",
-      "Metric " + describe(fits.options.metric) + ", per sample and channel, both orderings of each cell. Fitted on " +
-          (fits.fittedSamples == fits.usableCells ? "all " + std::to_string(fits.usableCells) + " usable cells"
-                                                  : "a stratified subset of " + std::to_string(fits.fittedSamples) +
-                                                        " of the " + std::to_string(fits.usableCells) + " usable cells") +
-          " (missing cells are left out). Error bars: standard deviations from ceres::Covariance scaled by cost / (N - p); "
-          "a fit is GOOD when Ceres converged, every channel's relative error is at most " +
-          html::number(DefaultMaxRelativeError) + " and the sum has a registry form.",
-      {{"class", "small"}});
+  std::string html =
+      html::textElement("p",
+                        "Metric " + describe(fits.options.metric) +
+                            ", per sample and channel, both orderings of each cell. Fitted on " +
+                            (fits.fittedSamples == fits.usableCells
+                                 ? "all " + std::to_string(fits.usableCells) + " usable cells"
+                                 : "a stratified subset of " + std::to_string(fits.fittedSamples) +
+                                       " of the " + std::to_string(fits.usableCells) + " usable cells") +
+                            " (missing cells are left out). Error bars: standard deviations from "
+                            "ceres::Covariance scaled by cost / (N - p); "
+                            "a fit is GOOD when Ceres converged, every channel's relative error is at most " +
+                            html::number(DefaultMaxRelativeError) + " and the sum has a registry form.",
+                        {{"class", "small"}});
   html += summaryTable(fits);
   std::string charts;
   json familiesJson = json::array();
   for (size_t i = 0; i < fits.families.size(); ++i) {
     const FamilyFit& f = fits.families[i];
-    html += html::element("details", html::textElement("summary", "Parameters of " + f.name) + parameterTable(material, f),
-                          {{"open", "open"}});
+    html += html::element(
+        "details", html::textElement("summary", "Parameters of " + f.name) + parameterTable(material, f),
+        {{"open", "open"}});
     if (f.result.x.empty()) continue;
     section.charts.push_back(sliceChart(material.folder + "-fit-" + std::to_string(i), slice, f));
     charts += chartFigure(section.charts.back());

@@ -40,7 +40,8 @@ struct MaterialFits {
 };
 
 // The families of this mode fitted to the material's table.
-MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& settings, const ProgressCallback& progress);
+MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& settings,
+                         const ProgressCallback& progress);
 
 // The fitted model's value at (wi, wo), per channel.
 Rgb evaluateFit(const FamilyFit& fit, const Vec3d& wi, const Vec3d& wo);

@@ -43,9 +43,13 @@ std::string utcNow() {
 class MaterialReporter {
  public:
   MaterialReporter(const LabMaterial& material, const LabSettings& settings,
-                   const std::vector<LabEnvironment>& environments, const fs::path& reportDir, PhaseTimer& timer,
-                   ProgressLine& progress, const std::string& step)
-      : m_(material), settings_(settings), environments_(environments), dir_(reportDir / material.folder), timer_(timer),
+                   const std::vector<LabEnvironment>& environments, const fs::path& reportDir,
+                   PhaseTimer& timer, ProgressLine& progress, const std::string& step)
+      : m_(material),
+        settings_(settings),
+        environments_(environments),
+        dir_(reportDir / material.folder),
+        timer_(timer),
         progress_(progress.callback(step + " " + material.name)) {
     fs::create_directories(dir_);
     report_.name = m_.name;
@@ -77,15 +81,18 @@ class MaterialReporter {
     if (!albedo.empty()) {
       const json& first = albedo.front()["albedo_rgb"];
       report_.keyNumbers.push_back(
-          {"albedo at normal incidence", html::rgb(Rgb(first[0].get<double>(), first[1].get<double>(), first[2].get<double>()))});
+          {"albedo at normal incidence",
+           html::rgb(Rgb(first[0].get<double>(), first[1].get<double>(), first[2].get<double>()))});
     }
     report_.sections.push_back(std::move(plots));
     if (m_.table) {
-      ReportSection measured = timer_.time("measured", m_.name, [&] { return measuredSection(m_, settings_, dir_); });
+      ReportSection measured =
+          timer_.time("measured", m_.name, [&] { return measuredSection(m_, settings_, dir_); });
       const double reachable = measured.data["reachable_cells"].get<double>();
       const double missing = measured.data["missing_reachable_cells"].get<double>();
-      report_.keyNumbers.push_back({"missing measurements", html::number(100.0 * missing / std::max(reachable, 1.0), 3) +
-                                                                "% of the reachable cells"});
+      report_.keyNumbers.push_back(
+          {"missing measurements",
+           html::number(100.0 * missing / std::max(reachable, 1.0), 3) + "% of the reachable cells"});
       report_.sections.push_back(std::move(measured));
       addFitSection();
     }
@@ -101,7 +108,8 @@ class MaterialReporter {
     for (const FamilyFit& f : fits_.families)
       if (!f.result.x.empty() && (!best || meanError(f) < meanError(*best))) best = &f;
     if (best)
-      report_.keyNumbers.push_back({"best fit", best->name + ", mean relative error " + html::number(meanError(*best), 3) +
+      report_.keyNumbers.push_back({"best fit", best->name + ", mean relative error " +
+                                                    html::number(meanError(*best), 3) +
                                                     (best->verdict.good ? "" : " (POOR)")});
   }
 
@@ -117,7 +125,8 @@ class MaterialReporter {
       if (se[c] > 0) worst = std::max(worst, std::abs(comparison.profileTotal[c] - walk[c]) / se[c]);
     }
     report_.keyNumbers.push_back({"Rd profile", html::rgb(comparison.profileTotal)});
-    report_.keyNumbers.push_back({"Rd random walk", html::rgb(walk) + " (largest difference " + html::number(worst, 3) + " se)"});
+    report_.keyNumbers.push_back(
+        {"Rd random walk", html::rgb(walk) + " (largest difference " + html::number(worst, 3) + " se)"});
   }
 
   // Every material goes to the renderer, which decides what it can render (renders_section.h).
@@ -128,7 +137,8 @@ class MaterialReporter {
     if (const std::string refusal = renderRefusal(renders); !refusal.empty())
       report_.keyNumbers.push_back({"renders", "not rendered: " + refusal});
     if (const std::string closest = closestFitInRenders(renders); !closest.empty())
-      report_.keyNumbers.push_back({"closest fit in the renders", closest + " mean |difference| on the sphere"});
+      report_.keyNumbers.push_back(
+          {"closest fit in the renders", closest + " mean |difference| on the sphere"});
     report_.sections.push_back(std::move(renders));
   }
 
@@ -161,8 +171,11 @@ void printSummary(const std::vector<MaterialReport>& reports, const fs::path& in
     json materials = json::array();
     for (const MaterialReport& r : reports)
       materials.push_back({{"name", r.name}, {"kind", r.kind}, {"passed", r.passed}, {"verdict", r.verdict}});
-    std::cout << json{{"report", index.string()}, {"passed", allPassed}, {"materials", materials},
-                      {"timings", timer.toJson()}}.dump(2)
+    std::cout << json{{"report", index.string()},
+                      {"passed", allPassed},
+                      {"materials", materials},
+                      {"timings", timer.toJson()}}
+                     .dump(2)
               << "\n";
     return;
   }
@@ -176,22 +189,26 @@ void printSummary(const std::vector<MaterialReport>& reports, const fs::path& in
 
 CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
-      "lab", "Write a static HTML report (DIR/index.html, PNG images, JSON data) on materials: the kit's verdict "
-             "with its chi-square maps, lobes, albedo, measured slices, fits and renders; none given: a showcase");
-  command->add_option("material", options.materials,
-                      "Materials: inline JSON, JSON files, or MERL .binary files; none: the built-in showcase");
+      "lab",
+      "Write a static HTML report (DIR/index.html, PNG images, JSON data) on materials: the kit's verdict "
+      "with its chi-square maps, lobes, albedo, measured slices, fits and renders; none given: a showcase");
+  command->add_option(
+      "material", options.materials,
+      "Materials: inline JSON, JSON files, or MERL .binary files; none: the built-in showcase");
   command->add_option("--out", options.out, "Report directory, replaced whole when the report is complete")
       ->type_name("DIR")
       ->capture_default_str();
   command->add_flag("--quick", options.quick,
                     "Fewer samples, angles and paths (the showcase in under 2 minutes on 2 cores)");
-  command->add_option("--seed", options.seed, "Seed of every random number; the same seed gives the same report")
+  command
+      ->add_option("--seed", options.seed, "Seed of every random number; the same seed gives the same report")
       ->type_name("INTEGER")
       ->transform(integerIn(0))
       ->capture_default_str();
-  command->add_option("--env", options.environments,
-                      "Environment maps for the renders (equirectangular OpenEXR, width = 2 x height); default: "
-                      "studio.exr and courtyard.exr of data/envmaps; repeat for more")
+  command
+      ->add_option("--env", options.environments,
+                   "Environment maps for the renders (equirectangular OpenEXR, width = 2 x height); default: "
+                   "studio.exr and courtyard.exr of data/envmaps; repeat for more")
       ->type_name("FILE")
       ->allow_extra_args(false);  // one file per --env: a MATERIAL after it stays a material
   command->add_flag("--json", options.json, "Print the verdicts, the report's path and the timings as JSON");
@@ -203,20 +220,23 @@ int runLabCommand(const LabCommandOptions& options) {
   std::vector<LabMaterial> materials;
   for (const std::string& argument : options.materials) materials.push_back(loadLabMaterial(argument));
   makeNamesUnique(materials);
-  const std::vector<LabEnvironment> environments = loadLabEnvironments(
-      options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments);
+  const std::vector<LabEnvironment> environments =
+      loadLabEnvironments(options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments);
   StagedDirectory staged(options.out, ReportMarkerFile, ReportGenerator, "--out");
 
-  const LabSettings settings = options.quick ? LabSettings::quickMode(options.seed) : LabSettings::fullMode(options.seed);
+  const LabSettings settings =
+      options.quick ? LabSettings::quickMode(options.seed) : LabSettings::fullMode(options.seed);
   ProgressLine progress;
   PhaseTimer timer(true, [&progress] { progress.clear(); });
   const auto start = std::chrono::steady_clock::now();
-  if (materials.empty()) materials = showcaseLabMaterials(staged.path() / "scratch", timer, progress.callback("showcase"));
+  if (materials.empty())
+    materials = showcaseLabMaterials(staged.path() / "scratch", timer, progress.callback("showcase"));
 
   std::vector<MaterialReport> reports;
   for (size_t i = 0; i < materials.size(); ++i) {
     const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "]";
-    reports.push_back(MaterialReporter(materials[i], settings, environments, staged.path(), timer, progress, step).run());
+    reports.push_back(
+        MaterialReporter(materials[i], settings, environments, staged.path(), timer, progress, step).run());
   }
   std::error_code error;
   fs::remove_all(staged.path() / "scratch", error);  // tables of a showcase that had no cache directory
@@ -226,7 +246,8 @@ int runLabCommand(const LabCommandOptions& options) {
   run.createdAt = utcNow();
   run.settings = settings.toJson();
   run.timings = timer.toJson();
-  run.timings["total_wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.timings["total_wall_seconds"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.command = commandLine(options);
   timer.time("write", "", [&] { writeReport(staged.path(), run, reports); });
   staged.commit();

@@ -17,7 +17,8 @@ struct LabCommandOptions {
   std::string out = "lab-report";
   bool quick = false;
   uint64_t seed = 1;
-  std::vector<std::string> environments;  // equirectangular EXR maps for the renders; none: two of data/envmaps
+  std::vector<std::string>
+      environments;  // equirectangular EXR maps for the renders; none: two of data/envmaps
   bool json = false;
 };
 

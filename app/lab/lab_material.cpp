@@ -15,7 +15,8 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
@@ -53,7 +54,8 @@ const char* toString(LabMaterialKind kind) {
   return "analytic";
 }
 
-LabMaterial measuredLabMaterial(std::string name, const fs::path& file, std::shared_ptr<const MerlTable> table) {
+LabMaterial measuredLabMaterial(std::string name, const fs::path& file,
+                                std::shared_ptr<const MerlTable> table) {
   LabMaterial m;
   m.name = std::move(name);
   m.kind = LabMaterialKind::Measured;
@@ -84,7 +86,8 @@ LabMaterial loadLabMaterial(const std::string& argument) {
     return loadMeasured(fs::path(argument).stem().string(), argument);
   const json material = loadMaterialArgument(argument);
   if (isInlineMaterial(argument)) {
-    const std::string type = material.is_object() ? material.value("type", std::string("material")) : "material";
+    const std::string type =
+        material.is_object() ? material.value("type", std::string("material")) : "material";
     LabMaterial loaded = fromDescription(type, material);
     loaded.about = "Given as inline JSON: " + material.dump();
     return loaded;
@@ -102,7 +105,8 @@ void makeNamesUnique(std::vector<LabMaterial>& materials) {
   std::set<std::string> names, folders;
   for (LabMaterial& material : materials) {
     const std::string base = material.name;
-    for (int copy = 2; !names.insert(material.name).second; ++copy) material.name = base + " #" + std::to_string(copy);
+    for (int copy = 2; !names.insert(material.name).second; ++copy)
+      material.name = base + " #" + std::to_string(copy);
     // Never empty and never starting with '.': no "..", no hidden folder.
     std::string folderBase = safeFileStem(material.name);
     if (folderBase.empty() || folderBase.front() == '.') folderBase = "material" + folderBase;

@@ -25,10 +25,10 @@ struct LabMaterial {
   std::string folder;  // its images and data.json: a file-system-safe, unique name
   std::string about;   // one sentence: what it is and where it came from
   LabMaterialKind kind = LabMaterialKind::Analytic;
-  nlohmann::json description;  // completed: every default filled in
-  std::unique_ptr<BsdfModel> bsdf;                // Analytic and Measured
-  std::shared_ptr<const MerlTable> table;         // Measured: the table as stored
-  std::optional<SubsurfaceMaterial> subsurface;   // Subsurface
+  nlohmann::json description;                    // completed: every default filled in
+  std::unique_ptr<BsdfModel> bsdf;               // Analytic and Measured
+  std::shared_ptr<const MerlTable> table;        // Measured: the table as stored
+  std::optional<SubsurfaceMaterial> subsurface;  // Subsurface
   // Measured-style tables made by the lab: the models whose sum the table holds (a published
   // fit's Lambertian and lobe), shown as the ground truth next to the fits.
   std::vector<nlohmann::json> groundTruth;
@@ -39,7 +39,8 @@ struct LabMaterial {
 LabMaterial loadLabMaterial(const std::string& argument);
 
 // A measured material from a table already in memory (the showcase's generated tables).
-LabMaterial measuredLabMaterial(std::string name, const std::filesystem::path& file, std::shared_ptr<const MerlTable> table);
+LabMaterial measuredLabMaterial(std::string name, const std::filesystem::path& file,
+                                std::shared_ptr<const MerlTable> table);
 
 // Any registry material (analytic or subsurface) under a name.
 LabMaterial describedLabMaterial(std::string name, const nlohmann::json& material);

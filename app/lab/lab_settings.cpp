@@ -65,26 +65,33 @@ LabSettings LabSettings::fullMode(uint64_t seed) {
 }
 
 nlohmann::json LabSettings::toJson() const {
-  return {{"mode", quick ? "quick" : "full"},
-          {"seed", seed},
-          {"check",
-           {{"samples", kit.samples},
-            {"grid", {kit.thetaBins, kit.phiBins}},
-            {"wi_theta_deg", kit.wiThetaDeg},
-            {"wi_phi_deg", kit.wiPhiDeg},
-            {"alpha", kit.alpha},
-            {"reciprocity_pairs", kit.reciprocityPairs},
-            {"negative_controls", negativeControls}}},
-          {"lobes", {{"wi_theta_deg", lobeAnglesDeg}, {"directions", lobeDirections}}},
-          {"albedo", {{"wi_theta_deg", albedoAnglesDeg},
-                      {"grid", {albedoCosThetaCells, albedoPhiCells}},
-                      {"probe_samples", albedoProbeSamples}}},
-          {"slice_phi_d_deg", slicePhiDiffDeg},
-          {"walk_paths_per_channel", walkPaths},
-          {"fits", {{"families", fitFamilies}, {"samples", fitSamples}, {"grid_points", fitGridPoints},
-                    {"starts", fitStarts}, {"grid_samples", fitGridSamples}, {"start_samples", fitStartSamples}}},
-          {"profile_bins", profileBins},
-          {"renders", {{"size", renderSize}, {"samples_per_pixel", renderSpp}, {"max_depth", renderMaxDepth}}}};
+  return {
+      {"mode", quick ? "quick" : "full"},
+      {"seed", seed},
+      {"check",
+       {{"samples", kit.samples},
+        {"grid", {kit.thetaBins, kit.phiBins}},
+        {"wi_theta_deg", kit.wiThetaDeg},
+        {"wi_phi_deg", kit.wiPhiDeg},
+        {"alpha", kit.alpha},
+        {"reciprocity_pairs", kit.reciprocityPairs},
+        {"negative_controls", negativeControls}}},
+      {"lobes", {{"wi_theta_deg", lobeAnglesDeg}, {"directions", lobeDirections}}},
+      {"albedo",
+       {{"wi_theta_deg", albedoAnglesDeg},
+        {"grid", {albedoCosThetaCells, albedoPhiCells}},
+        {"probe_samples", albedoProbeSamples}}},
+      {"slice_phi_d_deg", slicePhiDiffDeg},
+      {"walk_paths_per_channel", walkPaths},
+      {"fits",
+       {{"families", fitFamilies},
+        {"samples", fitSamples},
+        {"grid_points", fitGridPoints},
+        {"starts", fitStarts},
+        {"grid_samples", fitGridSamples},
+        {"start_samples", fitStartSamples}}},
+      {"profile_bins", profileBins},
+      {"renders", {{"size", renderSize}, {"samples_per_pixel", renderSpp}, {"max_depth", renderMaxDepth}}}};
 }
 
 }  // namespace scatterlab

@@ -51,7 +51,7 @@ struct LabSettings {
   int profileBins = 24;
 
   std::vector<std::pair<std::string, std::string>> fitFamilies;  // name, --model spec
-  size_t fitSamples = 30000;       // stratified subset of the usable cells; 0: all
+  size_t fitSamples = 30000;  // stratified subset of the usable cells; 0: all
   int fitGridPoints = 256, fitStarts = 3;
   size_t fitGridSamples = 20000, fitStartSamples = 100000;  // fitting/brdf_fit.h FitOptions
 

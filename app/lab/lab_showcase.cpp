@@ -27,7 +27,10 @@ MeasurementPerturbation showcasePerturbation() {
 }
 
 json perturbationJson(const MeasurementPerturbation& p) {
-  return {{"seed", p.seed}, {"gain_sigma", p.gainSigma}, {"log_noise", p.logSigma}, {"noise_floor", p.noiseFloor},
+  return {{"seed", p.seed},
+          {"gain_sigma", p.gainSigma},
+          {"log_noise", p.logSigma},
+          {"noise_floor", p.noiseFloor},
           {"missing_above_deg", p.missingAboveDeg ? json(*p.missingAboveDeg) : json()}};
 }
 
@@ -40,10 +43,13 @@ const BundleMaterial& bundleMaterial(const std::string& name) {
 // The table of a published fit line with the showcase's perturbation: from the cache when it
 // holds it, else synthesised (all cores) and written there.
 std::shared_ptr<const MerlTable> measuredStyleTable(TableCache& cache, const BundleMaterial& material,
-                                                   const MeasurementPerturbation& perturbation,
-                                                   const ProgressCallback& progress) {
-  const json source{{"fit_file", BundleFitFile}, {"fit", material.fitLine}, {"perturbation", perturbationJson(perturbation)}};
-  if (cache.holds(material.name, source)) return std::make_shared<const MerlTable>(readMerl(cache.file(material.name)));
+                                                    const MeasurementPerturbation& perturbation,
+                                                    const ProgressCallback& progress) {
+  const json source{{"fit_file", BundleFitFile},
+                    {"fit", material.fitLine},
+                    {"perturbation", perturbationJson(perturbation)}};
+  if (cache.holds(material.name, source))
+    return std::make_shared<const MerlTable>(readMerl(cache.file(material.name)));
   std::vector<std::unique_ptr<BsdfModel>> models;
   std::vector<const BsdfModel*> components;
   for (const json& component : parsePublishedFitLine(material.fitLine).components()) {
@@ -65,9 +71,13 @@ LabMaterial measuredStyle(TableCache& cache, const std::string& name, const std:
                                       measuredStyleTable(cache, material, perturbation, progress));
   m.groundTruth = parsePublishedFitLine(material.fitLine).components();
   for (json& component : m.groundTruth) component = completeMaterial(component);
-  m.about = "Measured-style " + what + ": a MERL-layout table synthesised from the published Ngan et al. 2005 "
-            "Cook-Torrance fit of MERL's " + name + ", with 5% log-normal noise, a 1e-4 noise floor and no "
-            "measurements beyond 85 degrees (" + cache.file(name).string() + ")";
+  m.about = "Measured-style " + what +
+            ": a MERL-layout table synthesised from the published Ngan et al. 2005 "
+            "Cook-Torrance fit of MERL's " +
+            name +
+            ", with 5% log-normal noise, a 1e-4 noise floor and no "
+            "measurements beyond 85 degrees (" +
+            cache.file(name).string() + ")";
   return m;
 }
 
@@ -83,27 +93,31 @@ std::vector<LabMaterial> showcaseLabMaterials(const fs::path& scratch, PhaseTime
   std::vector<LabMaterial> materials;
   materials.push_back(describedLabMaterial(
       "gold-ggx", json{{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.2}, {"metal", "Au"}}));
-  materials.back().about = "Analytic conductor: GGX microfacets (alpha 0.2), gold's complex index of refraction";
+  materials.back().about =
+      "Analytic conductor: GGX microfacets (alpha 0.2), gold's complex index of refraction";
   materials.push_back(describedLabMaterial(
       "red-rough-plastic",
       json{{"type", "rough-plastic"}, {"alpha", 0.15}, {"diffuse", {0.6, 0.08, 0.05}}, {"eta", 1.5}}));
-  materials.back().about = "Plastic: a rough dielectric coating (GGX alpha 0.15, eta 1.5) over a red Lambertian base";
+  materials.back().about =
+      "Plastic: a rough dielectric coating (GGX alpha 0.15, eta 1.5) over a red Lambertian base";
 
   timer.time("synth", "", [&] {
     fs::path directory = showcaseCacheDirectory().value_or(scratch);
     std::error_code error;
     fs::create_directories(directory, error);
-    if (error || !fs::is_directory(directory)) directory = scratch;  // an unwritable cache is no reason to fail
+    if (error || !fs::is_directory(directory))
+      directory = scratch;  // an unwritable cache is no reason to fail
     fs::create_directories(directory);
     TableCache cache(directory);
     materials.push_back(measuredStyle(cache, "gold-metallic-paint", "paint", progress));
     materials.push_back(measuredStyle(cache, "alum-bronze", "metal", progress));
   });
 
-  materials.push_back(
-      describedLabMaterial("skin-burley", json{{"type", "subsurface"}, {"profile", "burley"}, {"medium", "Skin1"}}));
-  materials.back().about = "Subsurface: Christensen-Burley normalised diffusion for Jensen et al. 2001's Skin1 "
-                           "(searchlight fit), against the half-space random walk in the same medium";
+  materials.push_back(describedLabMaterial(
+      "skin-burley", json{{"type", "subsurface"}, {"profile", "burley"}, {"medium", "Skin1"}}));
+  materials.back().about =
+      "Subsurface: Christensen-Burley normalised diffusion for Jensen et al. 2001's Skin1 "
+      "(searchlight fit), against the half-space random walk in the same medium";
   makeNamesUnique(materials);
   return materials;
 }

@@ -5,9 +5,9 @@
 // from the published Ngan et al. 2005 Cook-Torrance fits of MERL's gold-metallic-paint and
 // alum-bronze (compiled in: app/measured_bundle.h), with a measurement's imperfections: 5%
 // log-normal noise, a noise floor of 1e-4 sr^-1 and no measurements beyond 85 degrees (no gain
-// error, so that the published fit is the ground truth the fits are compared with). They are kept in the cache directory (lab-showcase/, with a
-// manifest, so a second run reads them in a fraction of a second), or, when no cache
-// directory is known, in a scratch directory the caller removes.
+// error, so that the published fit is the ground truth the fits are compared with). They are kept in the
+// cache directory (lab-showcase/, with a manifest, so a second run reads them in a fraction of a second), or,
+// when no cache directory is known, in a scratch directory the caller removes.
 #pragma once
 
 #include <filesystem>

@@ -11,7 +11,6 @@ namespace {
 
 using nlohmann::json;
 
-
 // The slice image's numbers: f per channel for every cell, null where missing.
 void writeSliceJson(const std::filesystem::path& path, const MeasuredSlice& slice) {
   json thetaHalf = json::array(), thetaDiff = json::array(), rows = json::array();
@@ -25,11 +24,12 @@ void writeSliceJson(const std::filesystem::path& path, const MeasuredSlice& slic
     }
     rows.push_back(std::move(row));
   }
-  const json document{{"phi_d_deg", slice.phiDiffDeg},
-                      {"theta_h_deg", thetaHalf},
-                      {"theta_d_deg", thetaDiff},
-                      {"f_rgb", rows},
-                      {"layout", "f_rgb[theta_h cell][theta_d cell] = [r, g, b] in 1/sr, null where missing"}};
+  const json document{
+      {"phi_d_deg", slice.phiDiffDeg},
+      {"theta_h_deg", thetaHalf},
+      {"theta_d_deg", thetaDiff},
+      {"f_rgb", rows},
+      {"layout", "f_rgb[theta_h cell][theta_d cell] = [r, g, b] in 1/sr, null where missing"}};
   writeTextFileAtomically(path, document.dump());
 }
 
@@ -65,7 +65,12 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
   for (size_t i = 0; i < std::size(SliceThetaDiffDeg); ++i) {
     const int cell = thetaDiffCellAt(SliceThetaDiffDeg[i]);
     const std::vector<Vec2d> points = sliceAlongThetaHalf(slice, cell);
-    chart.series.push_back({"theta_d " + html::degrees(thetaDiffCentreDeg(cell)), paletteColor(i), SeriesStyle::Points, points, {}, {}});
+    chart.series.push_back({"theta_d " + html::degrees(thetaDiffCentreDeg(cell)),
+                            paletteColor(i),
+                            SeriesStyle::Points,
+                            points,
+                            {},
+                            {}});
     json pointsJson = json::array();
     for (const Vec2d& p : points) pointsJson.push_back({p.x, p.y});
     slicesJson.push_back({{"theta_d_deg", thetaDiffCentreDeg(cell)}, {"theta_h_deg_and_f", pointsJson}});
@@ -76,29 +81,34 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
   size_t missing = 0;
   for (const CellState state : slice.state) missing += state == CellState::Missing ? 1 : 0;
   const std::string base = material.folder + "/";
-  const std::string image =
-      html::element("figure",
-                    html::voidElement("img", {{"src", base + "slice.png"}, {"alt", "theta_h / theta_d slice"}, {"class", "slice"}}) +
-                        html::element("figcaption",
-                                      "log<sub>10</sub> f (luminance) at phi_d = " + html::escape(html::degrees(slice.phiDiffDeg)) +
-                                          ": theta_h cells across (non-linear, the highlight on the left), theta_d down "
-                                          "from 0 to 90\u00b0" +
-                                          html::element("div",
-                                                        html::textElement("span", html::number(scale.log10Min, 3)) +
-                                                            html::voidElement("img", {{"src", base + "slice_scale.png"},
-                                                                                      {"alt", "colour scale"}}) +
-                                                            html::textElement("span", html::number(scale.log10Max, 3)),
-                                                        {{"class", "colour-bar"}}) +
-                                          html::escape(missing ? std::to_string(missing) + " missing cells in this slice, in magenta"
-                                                               : "no missing cells in this slice")),
-                    {{"class", "slice-figure"}});
+  const std::string image = html::element(
+      "figure",
+      html::voidElement(
+          "img", {{"src", base + "slice.png"}, {"alt", "theta_h / theta_d slice"}, {"class", "slice"}}) +
+          html::element(
+              "figcaption",
+              "log<sub>10</sub> f (luminance) at phi_d = " + html::escape(html::degrees(slice.phiDiffDeg)) +
+                  ": theta_h cells across (non-linear, the highlight on the left), theta_d down "
+                  "from 0 to 90\u00b0" +
+                  html::element("div",
+                                html::textElement("span", html::number(scale.log10Min, 3)) +
+                                    html::voidElement(
+                                        "img", {{"src", base + "slice_scale.png"}, {"alt", "colour scale"}}) +
+                                    html::textElement("span", html::number(scale.log10Max, 3)),
+                                {{"class", "colour-bar"}}) +
+                  html::escape(missing ? std::to_string(missing) + " missing cells in this slice, in magenta"
+                                       : "no missing cells in this slice")),
+      {{"class", "slice-figure"}});
   const TableCoverage coverage = tableCoverage(table);
   const std::string summary = html::textElement(
-      "p", std::to_string(coverage.missingReachable) + " of the " + std::to_string(coverage.reachable) +
-               " cells that a reflection above the surface reaches are missing (stored negative), " +
-               html::number(100.0 * double(coverage.missingReachable) / double(std::max<size_t>(coverage.reachable, 1)), 3) +
-               "%; the model fills them from the nearest measured cell along theta_d "
-               "(materials/measured/tabulated_brdf.h).",
+      "p",
+      std::to_string(coverage.missingReachable) + " of the " + std::to_string(coverage.reachable) +
+          " cells that a reflection above the surface reaches are missing (stored negative), " +
+          html::number(
+              100.0 * double(coverage.missingReachable) / double(std::max<size_t>(coverage.reachable, 1)),
+              3) +
+          "%; the model fills them from the nearest measured cell along theta_d "
+          "(materials/measured/tabulated_brdf.h).",
       {{"class", "small"}});
   section.html = summary + html::element("div", image + chartFigure(chart), {{"class", "chart-grid"}});
   section.data = {{"phi_d_cell", slice.phiDiffCell},

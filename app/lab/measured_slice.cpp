@@ -24,9 +24,9 @@ MeasuredSlice sliceAtPhiDiff(const MerlTable& table, double phiDiffDeg) {
     for (int d = 0; d < merl::ThetaDiffCells; ++d) {
       const size_t cell = merl::cellIndex(h, d, slice.phiDiffCell);
       const size_t k = size_t(h) * merl::ThetaDiffCells + size_t(d);
-      slice.state[k] = table.isMissing(cell)      ? CellState::Missing
-                       : !isReachableCell(cell)   ? CellState::Unreachable
-                                                  : CellState::Measured;
+      slice.state[k] = table.isMissing(cell)    ? CellState::Missing
+                       : !isReachableCell(cell) ? CellState::Unreachable
+                                                : CellState::Measured;
       slice.value[k] = slice.state[k] == CellState::Measured ? table.rgb(cell) : Rgb(0.0);
     }
   return slice;
@@ -50,7 +50,8 @@ SliceImageScale writeSliceImage(const std::filesystem::path& path, const Measure
   SliceImageScale scale{0, -INFINITY};
   for (size_t k = 0; k < slice.value.size(); ++k) {
     const double y = rec709Luminance(slice.value[k]);
-    if (slice.state[k] == CellState::Measured && y > 0) scale.log10Max = std::max(scale.log10Max, std::log10(y));
+    if (slice.state[k] == CellState::Measured && y > 0)
+      scale.log10Max = std::max(scale.log10Max, std::log10(y));
   }
   if (!std::isfinite(scale.log10Max)) scale.log10Max = 0;  // nothing measured: any scale will do
   scale.log10Min = scale.log10Max - decades;

@@ -20,7 +20,9 @@ struct MeasuredSlice {
   std::vector<Rgb> value;
   std::vector<CellState> state;
 
-  const Rgb& at(int thetaHalfCell, int thetaDiffCell) const { return value[size_t(thetaHalfCell) * 90 + size_t(thetaDiffCell)]; }
+  const Rgb& at(int thetaHalfCell, int thetaDiffCell) const {
+    return value[size_t(thetaHalfCell) * 90 + size_t(thetaDiffCell)];
+  }
   CellState stateAt(int thetaHalfCell, int thetaDiffCell) const {
     return state[size_t(thetaHalfCell) * 90 + size_t(thetaDiffCell)];
   }
@@ -51,8 +53,8 @@ struct SliceImageScale {
 // validation/heatmap.h over at most `decades` decades below the brightest cell. Missing cells
 // are magenta; cells no reflection above the surface reaches, and zeros, are the bottom of the
 // scale. Returns the scale (for the colour bar).
-SliceImageScale writeSliceImage(const std::filesystem::path& path, const MeasuredSlice& slice, double decades = 4.0,
-                                int cellPixels = 4);
+SliceImageScale writeSliceImage(const std::filesystem::path& path, const MeasuredSlice& slice,
+                                double decades = 4.0, int cellPixels = 4);
 
 // The colour bar of that scale, left (log10Min) to right (log10Max).
 void writeColourBar(const std::filesystem::path& path, int width = 256, int height = 14);

@@ -43,7 +43,9 @@ std::vector<std::string> PhaseTimer::phases() const {
 nlohmann::json PhaseTimer::toJson() const {
   nlohmann::json entries = nlohmann::json::array(), totals = nlohmann::json::array();
   for (const PhaseTiming& t : timings_)
-    entries.push_back({{"phase", t.phase}, {"material", t.material}, {"wall_seconds", t.wallSeconds},
+    entries.push_back({{"phase", t.phase},
+                       {"material", t.material},
+                       {"wall_seconds", t.wallSeconds},
                        {"cpu_seconds", t.cpuSeconds}});
   for (const std::string& phase : phases()) {
     const PhaseTiming sum = total(phase);

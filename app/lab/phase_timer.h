@@ -22,7 +22,8 @@ class PhaseTimer {
  public:
   // log: print a line to stderr when a phase ends, after calling beforeLog (which may clear
   // a progress line).
-  explicit PhaseTimer(bool log = true, std::function<void()> beforeLog = {}) : log_(log), beforeLog_(std::move(beforeLog)) {}
+  explicit PhaseTimer(bool log = true, std::function<void()> beforeLog = {})
+      : log_(log), beforeLog_(std::move(beforeLog)) {}
 
   // Times fn() as `phase` of `material` and returns what fn returns.
   template <typename Fn> auto time(const std::string& phase, const std::string& material, Fn&& fn) {

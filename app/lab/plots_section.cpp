@@ -13,7 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-
 // Guides of a polar plot: the surface (and the normal), and circles at half and full radius.
 void addPolarGuides(Chart& chart, bool fullCircle) {
   const double lowest = fullCircle ? -1.0 : 0.0;
@@ -52,7 +51,11 @@ Chart polarLobeChart(const std::string& id, const std::vector<LobeCurve>& curves
       if (std::isfinite(radius.back())) peak = std::max(peak, radius.back());
     }
     ChartSeries lobe{"theta_i " + html::degrees(curve.thetaInDeg) + " (peak " + html::number(peak, 3) + ")",
-                     paletteColor(i), SeriesStyle::Line, {}, {}, {}};
+                     paletteColor(i),
+                     SeriesStyle::Line,
+                     {},
+                     {},
+                     {}};
     for (size_t k = 0; k < radius.size() && peak > 0; ++k) {
       const double t = curve.thetaOutDeg[k] * Pi / 180.0;
       lobe.points.push_back({radius[k] / peak * std::sin(t), radius[k] / peak * std::cos(t)});
@@ -60,7 +63,8 @@ Chart polarLobeChart(const std::string& id, const std::vector<LobeCurve>& curves
     chart.series.push_back(std::move(lobe));
     // The incident direction, drawn from the centre toward wi (on the left, t < 0).
     const double ti = curve.thetaInDeg * Pi / 180.0;
-    chart.series.push_back({"", paletteColor(i), SeriesStyle::Dashed, {{0, 0}, {-std::sin(ti), std::cos(ti)}}, {}, {}});
+    chart.series.push_back(
+        {"", paletteColor(i), SeriesStyle::Dashed, {{0, 0}, {-std::sin(ti), std::cos(ti)}}, {}, {}});
   }
   return chart;
 }
@@ -75,7 +79,8 @@ Chart lobeValueChart(const std::string& id, const std::vector<LobeCurve>& curves
   chart.xMin = fullCircle ? -180.0 : -90.0;
   chart.xMax = fullCircle ? 180.0 : 90.0;
   for (size_t i = 0; i < curves.size(); ++i) {
-    ChartSeries series{"theta_i " + html::degrees(curves[i].thetaInDeg), paletteColor(i), SeriesStyle::Line, {}, {}, {}};
+    ChartSeries series{
+        "theta_i " + html::degrees(curves[i].thetaInDeg), paletteColor(i), SeriesStyle::Line, {}, {}, {}};
     for (size_t k = 0; k < curves[i].value.size(); ++k)
       series.points.push_back({curves[i].thetaOutDeg[k], rec709Luminance(curves[i].value[k])});
     chart.series.push_back(std::move(series));
@@ -102,7 +107,8 @@ Chart albedoChart(const std::string& id, const std::vector<AlbedoPoint>& curve) 
     for (const AlbedoPoint& p : curve) series.points.push_back({p.thetaDeg, p.albedo[c]});
     chart.series.push_back(std::move(series));
   }
-  chart.series.push_back({"energy conservation (1)", "#999999", SeriesStyle::Guide, {{0, 1}, {90, 1}}, {}, {}});
+  chart.series.push_back(
+      {"energy conservation (1)", "#999999", SeriesStyle::Guide, {{0, 1}, {90, 1}}, {}, {}});
   return chart;
 }
 
@@ -111,7 +117,8 @@ json curvesJson(const std::vector<LobeCurve>& curves) {
   for (const LobeCurve& curve : curves) {
     json values = json::array();
     for (const Rgb& f : curve.value)
-      values.push_back({std::isfinite(f.x) ? f.x : 0.0, std::isfinite(f.y) ? f.y : 0.0, std::isfinite(f.z) ? f.z : 0.0});
+      values.push_back(
+          {std::isfinite(f.x) ? f.x : 0.0, std::isfinite(f.y) ? f.y : 0.0, std::isfinite(f.z) ? f.z : 0.0});
     out.push_back({{"theta_i_deg", curve.thetaInDeg}, {"theta_o_deg", curve.thetaOutDeg}, {"f_rgb", values}});
   }
   return out;
@@ -136,33 +143,40 @@ ReportSection plotsSection(const LabMaterial& material, const LabSettings& setti
   albedoOptions.phiCells = settings.albedoPhiCells;
   albedoOptions.probeSamples = settings.albedoProbeSamples;
   albedoOptions.seed = settings.seed;
-  const std::vector<AlbedoPoint> albedo = directionalAlbedoCurve(model, settings.albedoAnglesDeg, albedoOptions);
+  const std::vector<AlbedoPoint> albedo =
+      directionalAlbedoCurve(model, settings.albedoAnglesDeg, albedoOptions);
 
   const std::string prefix = material.folder + "-";
   const bool deltaOnly = !hasAny(model.flags(), LobeFlags::Diffuse | LobeFlags::Glossy);
   std::string body;
   if (deltaOnly) {
-    body += html::textElement("p", "This model has only delta (mirror-like) lobes: f is zero for every pair of "
-                                   "directions, so there is no lobe to draw.", {{"class", "note"}});
+    body += html::textElement("p",
+                              "This model has only delta (mirror-like) lobes: f is zero for every pair of "
+                              "directions, so there is no lobe to draw.",
+                              {{"class", "note"}});
   } else {
     section.charts.push_back(polarLobeChart(prefix + "lobe-polar", curves, fullCircle));
     section.charts.push_back(lobeValueChart(prefix + "lobe-log", curves, fullCircle));
   }
   section.charts.push_back(albedoChart(prefix + "albedo", albedo));
-  body += html::textElement("p", "The plane of incidence is at azimuth " + html::degrees(settings.kit.wiPhiDeg) +
-                                     " from the tangent, as in the checks. The albedo is the kit's quadrature (" +
-                                     std::to_string(settings.albedoCosThetaCells) + " x " +
-                                     std::to_string(settings.albedoPhiCells) + " cells split at sample centroids, " +
-                                     (fullCircle ? "importance transport, " : "") + "delta lobes included).",
-                            {{"class", "small"}});
+  body +=
+      html::textElement("p",
+                        "The plane of incidence is at azimuth " + html::degrees(settings.kit.wiPhiDeg) +
+                            " from the tangent, as in the checks. The albedo is the kit's quadrature (" +
+                            std::to_string(settings.albedoCosThetaCells) + " x " +
+                            std::to_string(settings.albedoPhiCells) + " cells split at sample centroids, " +
+                            (fullCircle ? "importance transport, " : "") + "delta lobes included).",
+                        {{"class", "small"}});
   std::string charts;
   for (const Chart& chart : section.charts) charts += chartFigure(chart);
   body += html::element("div", charts, {{"class", "chart-grid"}});
   section.html = std::move(body);
 
   json albedoJson = json::array();
-  for (const AlbedoPoint& p : albedo) albedoJson.push_back({{"theta_i_deg", p.thetaDeg}, {"albedo_rgb", {p.albedo.x, p.albedo.y, p.albedo.z}}});
-  section.data = {{"lobes", curvesJson(curves)}, {"directional_albedo", albedoJson},
+  for (const AlbedoPoint& p : albedo)
+    albedoJson.push_back({{"theta_i_deg", p.thetaDeg}, {"albedo_rgb", {p.albedo.x, p.albedo.y, p.albedo.z}}});
+  section.data = {{"lobes", curvesJson(curves)},
+                  {"directional_albedo", albedoJson},
                   {"plane_of_incidence_phi_deg", settings.kit.wiPhiDeg}};
   return section;
 }

@@ -8,10 +8,10 @@
 #include "app/lab/html.h"
 #include "integrator/environment_map_file.h"
 #include "integrator/exr_io.h"
+#include "integrator/material_scene.h"
 #include "integrator/png_io.h"
 #include "integrator/render.h"
 #include "integrator/render_error.h"
-#include "integrator/material_scene.h"
 #include "integrator/silhouette_mask.h"
 #include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
@@ -67,8 +67,8 @@ struct DifferenceNumbers {
   double meanAbs = 0, rms = 0, noise = 0;
 };
 
-DifferenceNumbers differenceOver(const Image& a, const Image& b, const Image& varianceA, const Image& varianceB,
-                                 const SilhouetteMask& mask, Image& difference) {
+DifferenceNumbers differenceOver(const Image& a, const Image& b, const Image& varianceA,
+                                 const Image& varianceB, const SilhouetteMask& mask, Image& difference) {
   double sumA = 0, sumAbs = 0, sumSquared = 0, sumVariance = 0;
   size_t n = 0;
   difference = Image(a.width(), a.height());
@@ -97,15 +97,16 @@ Image absolute(const Image& image) {
 std::string percent(double fraction) { return html::number(100.0 * fraction, 3) + "%"; }
 
 std::string figure(const std::string& src, const std::string& alt, const std::string& caption) {
-  return html::element("figure",
-                       html::voidElement("img", {{"src", src}, {"alt", alt}}) + html::element("figcaption", caption),
-                       {{"class", "render"}});
+  return html::element(
+      "figure", html::voidElement("img", {{"src", src}, {"alt", alt}}) + html::element("figcaption", caption),
+      {{"class", "render"}});
 }
 
 std::string refusalBox(const std::string& label, const std::string& message) {
   return html::element("div",
                        html::textElement("b", "Not rendered: " + label) + html::element("br", "") +
-                           html::textElement("span", "The renderer's message: ") + html::textElement("code", message),
+                           html::textElement("span", "The renderer's message: ") +
+                           html::textElement("code", message),
                        {{"class", "render-refused"}});
 }
 
@@ -117,7 +118,9 @@ struct Rendered {
 
 // The files of subject `key` under environment `env`: STEM.png and STEM.exr.
 std::string renderStem(const std::string& env, const std::string& key) { return "render_" + env + "_" + key; }
-std::string differenceStem(const std::string& env, const std::string& key) { return "difference_" + env + "_" + key; }
+std::string differenceStem(const std::string& env, const std::string& key) {
+  return "difference_" + env + "_" + key;
+}
 
 std::vector<Subject> subjectsOf(const LabMaterial& material, const MaterialFits* fits) {
   std::vector<Subject> subjects{{material.name, "material", material.description, ""}};
@@ -146,8 +149,10 @@ std::vector<LabEnvironment> loadLabEnvironments(const std::vector<std::string>& 
                        {"clamped_negative_values", map.clampedNegatives}};
       std::string name = fs::path(file).stem().string();
       for (const LabEnvironment& other : environments)
-        if (other.name == name) name += "-" + std::to_string(environments.size() + 1);  // file names stay apart
-      environments.push_back({name, file, Environment::fromMap(std::move(map.image)), std::move(description)});
+        if (other.name == name)
+          name += "-" + std::to_string(environments.size() + 1);  // file names stay apart
+      environments.push_back(
+          {name, file, Environment::fromMap(std::move(map.image)), std::move(description)});
     } catch (const RenderInputError& error) {
       throw InputError(std::string("--env: ") + error.what());
     }
@@ -161,9 +166,10 @@ SphereSceneFactory integratorSphereScene() {
   };
 }
 
-ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fits, const LabSettings& settings,
-                             const std::vector<LabEnvironment>& environments, const fs::path& materialDir,
-                             const ProgressCallback& progress, const SphereSceneFactory& sceneOf) {
+ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fits,
+                             const LabSettings& settings, const std::vector<LabEnvironment>& environments,
+                             const fs::path& materialDir, const ProgressCallback& progress,
+                             const SphereSceneFactory& sceneOf) {
   ReportSection section;
   section.id = "renders";
   section.title = "Renders";
@@ -243,17 +249,19 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
       const RenderResult& result = results[s][e].result;
       const std::string name = renderStem(env, subjects[s].key);
       writePngSrgb(materialDir / (name + ".png"), result.color, exposure);
-      writeExr(materialDir / (name + ".exr"), {{"", {"R", "G", "B"}, &result.color}, {"variance", {"R", "G", "B"}, &result.variance}});
+      writeExr(materialDir / (name + ".exr"),
+               {{"", {"R", "G", "B"}, &result.color}, {"variance", {"R", "G", "B"}, &result.variance}});
       figures += figure(base + name + ".png", subjects[s].label + " under " + env,
                         html::textElement("b", s == 0 ? subjects[s].label : "fit: " + subjects[s].label) +
                             html::element("br", "") +
                             html::escape("sphere mean " + html::rgb(results[s][e].sphere.meanRgb)));
       if (s == 0 || !reference) continue;
       Image difference;
-      const DifferenceNumbers numbers =
-          differenceOver(reference->color, result.color, reference->variance, result.variance, *mask, difference);
+      const DifferenceNumbers numbers = differenceOver(reference->color, result.color, reference->variance,
+                                                       result.variance, *mask, difference);
       const std::string diffName = differenceStem(env, subjects[s].key);
-      writePngSrgb(materialDir / (diffName + ".png"), absolute(difference), exposure + std::log2(DifferenceGain));
+      writePngSrgb(materialDir / (diffName + ".png"), absolute(difference),
+                   exposure + std::log2(DifferenceGain));
       writeExr(materialDir / (diffName + ".exr"), {{"", {"R", "G", "B"}, &difference}});
       differences.push_back({{"environment", env},
                              {"fit", subjects[s].label},
@@ -267,19 +275,19 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
       figures += figure(base + diffName + ".png", "difference of " + subjects[s].label + " under " + env,
                         html::escape("|" + material.name + " - fit| x " + html::number(DifferenceGain, 2)) +
                             html::element("br", "") +
-                            html::escape("mean " + percent(numbers.meanAbs) + ", rms " + percent(numbers.rms) +
-                                         " (noise " + percent(numbers.noise) + ")"));
+                            html::escape("mean " + percent(numbers.meanAbs) + ", rms " +
+                                         percent(numbers.rms) + " (noise " + percent(numbers.noise) + ")"));
     }
     body += html::textElement("h4", "under " + env + " (" + environments[e].file + "), exposure " +
-                                         html::number(exposure, 3) + " stops") +
+                                        html::number(exposure, 3) + " stops") +
             html::element("div", figures, {{"class", "renders"}});
   }
 
   const std::string about = html::textElement(
       "p",
-      "The sphere path-traced under each environment map, " + std::to_string(size) + " x " + std::to_string(size) +
-          " pixels, " + std::to_string(settings.renderSpp) + " samples per pixel, at most " +
-          std::to_string(settings.renderMaxDepth) +
+      "The sphere path-traced under each environment map, " + std::to_string(size) + " x " +
+          std::to_string(size) + " pixels, " + std::to_string(settings.renderSpp) +
+          " samples per pixel, at most " + std::to_string(settings.renderMaxDepth) +
           " bounces, every render of a map with the same random numbers." +
           (fits ? " Each fit beside the material with |material - fit| (the sphere's mean absolute and rms "
                   "difference relative to its mean, next to the rms the renders' noise alone would give). "
@@ -314,13 +322,14 @@ std::string closestFitInRenders(const ReportSection& renders) {
     for (const json* d : ds) sum += (*d)["relative_mean_abs_difference"].get<double>();
     return sum / double(ds.size());
   };
-  const auto best = std::min_element(fits.begin(), fits.end(),
-                                     [&](const auto& a, const auto& b) { return meanOf(a.second) < meanOf(b.second); });
+  const auto best = std::min_element(fits.begin(), fits.end(), [&](const auto& a, const auto& b) {
+    return meanOf(a.second) < meanOf(b.second);
+  });
   if (best == fits.end()) return "";
   std::string text = best->first + ":";
   for (size_t i = 0; i < best->second.size(); ++i)
-    text += (i ? ", " : " ") + percent((*best->second[i])["relative_mean_abs_difference"].get<double>()) + " (" +
-            (*best->second[i])["environment"].get<std::string>() + ")";
+    text += (i ? ", " : " ") + percent((*best->second[i])["relative_mean_abs_difference"].get<double>()) +
+            " (" + (*best->second[i])["environment"].get<std::string>() + ")";
   return text;
 }
 

@@ -55,9 +55,10 @@ SphereSceneFactory integratorSphereScene();
 // Renders `material` (and the families of `fits`, when given) under every environment and
 // writes the images into `materialDir`. A description the factory refuses (MaterialError, or
 // RenderInputError) is rendered as the factory's message.
-ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fits, const LabSettings& settings,
-                             const std::vector<LabEnvironment>& environments, const std::filesystem::path& materialDir,
-                             const ProgressCallback& progress, const SphereSceneFactory& sceneOf = integratorSphereScene());
+ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fits,
+                             const LabSettings& settings, const std::vector<LabEnvironment>& environments,
+                             const std::filesystem::path& materialDir, const ProgressCallback& progress,
+                             const SphereSceneFactory& sceneOf = integratorSphereScene());
 
 // The fit whose renders are closest to the material's (smallest mean over the maps of the
 // relative mean |material - fit|), with that difference per map: "Lambert + GGX: 1.5%

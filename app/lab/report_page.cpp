@@ -14,33 +14,37 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 std::string badge(bool passed) {
-  return html::textElement("span", passed ? "PASS" : "FAIL", {{"class", passed ? "badge pass" : "badge fail"}});
+  return html::textElement("span", passed ? "PASS" : "FAIL",
+                           {{"class", passed ? "badge pass" : "badge fail"}});
 }
 
 std::string summaryTable(const std::vector<MaterialReport>& materials) {
   std::string head;
-  for (const char* column : {"material", "kind", "verdict", "checks", "key numbers"}) head += html::textElement("th", column);
+  for (const char* column : {"material", "kind", "verdict", "checks", "key numbers"})
+    head += html::textElement("th", column);
   std::string body;
   for (const MaterialReport& m : materials) {
     std::string numbers;
     for (const auto& [label, value] : m.keyNumbers)
-      numbers += html::element("div", html::textElement("span", label, {{"class", "key"}}) + " " + html::escape(value));
-    body += html::element(
-        "tr",
-        html::element("td", html::textElement("a", m.name, {{"href", "#" + m.folder}})) +
-            html::textElement("td", m.kind) + html::element("td", badge(m.passed), {{"class", "verdict-cell"}}) +
-            html::textElement("td", m.verdict) + html::element("td", numbers, {{"class", "key-numbers"}}),
-        {{"class", m.passed ? "" : "failed"}});
+      numbers += html::element(
+          "div", html::textElement("span", label, {{"class", "key"}}) + " " + html::escape(value));
+    body += html::element("tr",
+                          html::element("td", html::textElement("a", m.name, {{"href", "#" + m.folder}})) +
+                              html::textElement("td", m.kind) +
+                              html::element("td", badge(m.passed), {{"class", "verdict-cell"}}) +
+                              html::textElement("td", m.verdict) +
+                              html::element("td", numbers, {{"class", "key-numbers"}}),
+                          {{"class", m.passed ? "" : "failed"}});
   }
-  return html::element("table", html::element("thead", html::element("tr", head)) + html::element("tbody", body),
+  return html::element("table",
+                       html::element("thead", html::element("tr", head)) + html::element("tbody", body),
                        {{"class", "summary"}});
 }
 
 std::string materialHtml(const MaterialReport& m) {
   std::string sections;
   for (const ReportSection& s : m.sections)
-    sections += html::element("section",
-                              html::textElement("h3", s.title) + s.html,
+    sections += html::element("section", html::textElement("h3", s.title) + s.html,
                               {{"id", m.folder + "-" + s.id}, {"class", "part part-" + s.id}});
   std::string toc;
   for (const ReportSection& s : m.sections)
@@ -48,8 +52,9 @@ std::string materialHtml(const MaterialReport& m) {
   const std::string header =
       html::element("h2", html::escape(m.name) + " " + badge(m.passed)) +
       html::textElement("p", m.about, {{"class", "about"}}) +
-      html::element("details", html::textElement("summary", "material description (every default filled in)") +
-                                   html::textElement("pre", m.description.dump(2))) +
+      html::element("details",
+                    html::textElement("summary", "material description (every default filled in)") +
+                        html::textElement("pre", m.description.dump(2))) +
       html::element("ul", toc, {{"class", "toc"}});
   return html::element("article", header + sections,
                        {{"id", m.folder}, {"class", m.passed ? "material passed" : "material failed"}});
@@ -57,20 +62,24 @@ std::string materialHtml(const MaterialReport& m) {
 
 std::string timingsTable(const json& timings) {
   std::string head;
-  for (const char* column : {"phase", "material", "wall (s)", "cpu (s)"}) head += html::textElement("th", column);
+  for (const char* column : {"phase", "material", "wall (s)", "cpu (s)"})
+    head += html::textElement("th", column);
   std::string body;
   for (const json& t : timings.value("phases", json::array()))
-    body += html::element("tr", html::textElement("td", t.value("phase", "")) +
-                                    html::textElement("td", t.value("material", "")) +
-                                    html::textElement("td", html::number(t.value("wall_seconds", 0.0), 3), {{"class", "num"}}) +
-                                    html::textElement("td", html::number(t.value("cpu_seconds", 0.0), 3), {{"class", "num"}}));
+    body += html::element(
+        "tr", html::textElement("td", t.value("phase", "")) +
+                  html::textElement("td", t.value("material", "")) +
+                  html::textElement("td", html::number(t.value("wall_seconds", 0.0), 3), {{"class", "num"}}) +
+                  html::textElement("td", html::number(t.value("cpu_seconds", 0.0), 3), {{"class", "num"}}));
   for (const json& t : timings.value("totals", json::array()))
-    body += html::element("tr",
-                          html::textElement("td", t.value("phase", "")) + html::textElement("td", "all materials") +
-                              html::textElement("td", html::number(t.value("wall_seconds", 0.0), 3), {{"class", "num"}}) +
-                              html::textElement("td", html::number(t.value("cpu_seconds", 0.0), 3), {{"class", "num"}}),
-                          {{"class", "total"}});
-  return html::element("table", html::element("thead", html::element("tr", head)) + html::element("tbody", body),
+    body += html::element(
+        "tr",
+        html::textElement("td", t.value("phase", "")) + html::textElement("td", "all materials") +
+            html::textElement("td", html::number(t.value("wall_seconds", 0.0), 3), {{"class", "num"}}) +
+            html::textElement("td", html::number(t.value("cpu_seconds", 0.0), 3), {{"class", "num"}}),
+        {{"class", "total"}});
+  return html::element("table",
+                       html::element("thead", html::element("tr", head)) + html::element("tbody", body),
                        {{"class", "rows timings"}});
 }
 
@@ -89,7 +98,7 @@ json materialDataJson(const MaterialReport& m) {
     for (const Chart& chart : s.charts) charts.push_back(chart.toJson());
     sections[s.id] = {{"title", s.title}, {"data", s.data}, {"charts", charts}};
   }
-  return {{"name", m.name}, {"kind", m.kind}, {"about", m.about}, {"material", m.description},
+  return {{"name", m.name},     {"kind", m.kind},       {"about", m.about},    {"material", m.description},
           {"passed", m.passed}, {"verdict", m.verdict}, {"sections", sections}};
 }
 
@@ -101,38 +110,42 @@ std::string reportHtml(const ReportRun& run, const std::vector<MaterialReport>& 
   std::string body =
       html::element("header",
                     html::textElement("h1", run.title) +
-                        html::element("p", badge(allPassed) + " " +
-                                               html::escape(std::to_string(materials.size()) + " materials, " +
-                                                            run.mode + " mode, made " + run.createdAt) +
-                                               html::element("br", "") +
-                                               html::textElement("code", run.command),
+                        html::element("p",
+                                      badge(allPassed) + " " +
+                                          html::escape(std::to_string(materials.size()) + " materials, " +
+                                                       run.mode + " mode, made " + run.createdAt) +
+                                          html::element("br", "") + html::textElement("code", run.command),
                                       {{"class", "meta"}})) +
       html::element("nav", html::textElement("h2", "Summary") + summaryTable(materials), {{"id", "summary"}});
   for (const MaterialReport& m : materials) body += materialHtml(m);
-  body += html::element("section",
-                        html::textElement("h2", "What each phase cost") +
-                            html::textElement("p", "Wall and CPU time of every phase on this machine (also in report.json).",
-                                              {{"class", "small"}}) +
-                            timingsTable(run.timings),
-                        {{"id", "timings"}});
-  body += html::element("footer", "Charts drawn by " +
-                                      html::textElement("a", "Chart.js " + std::string(chartJsVersion()),
-                                                        {{"href", "assets/chart.js-LICENSE.md"}}) +
-                                      " (MIT licence, copied beside it). The numbers behind every chart are in "
-                                      "each material's data.json and in report.json.");
+  body += html::element(
+      "section",
+      html::textElement("h2", "What each phase cost") +
+          html::textElement("p", "Wall and CPU time of every phase on this machine (also in report.json).",
+                            {{"class", "small"}}) +
+          timingsTable(run.timings),
+      {{"id", "timings"}});
+  body +=
+      html::element("footer", "Charts drawn by " +
+                                  html::textElement("a", "Chart.js " + std::string(chartJsVersion()),
+                                                    {{"href", "assets/chart.js-LICENSE.md"}}) +
+                                  " (MIT licence, copied beside it). The numbers behind every chart are in "
+                                  "each material's data.json and in report.json.");
   const std::string head =
       html::voidElement("meta", {{"charset", "utf-8"}}) +
       html::voidElement("meta", {{"name", "viewport"}, {"content", "width=device-width, initial-scale=1"}}) +
       html::textElement("title", run.title) +
       html::voidElement("link", {{"rel", "stylesheet"}, {"href", "assets/report.css"}}) +
       html::element("script", "", {{"src", "assets/chart.umd.min.js"}});
-  const std::string data =
-      html::element("script", html::jsonForScript(chartsJson(materials).dump()), {{"id", "chart-data"}, {"type", "application/json"}});
+  const std::string data = html::element("script", html::jsonForScript(chartsJson(materials).dump()),
+                                         {{"id", "chart-data"}, {"type", "application/json"}});
   return "<!doctype html>\n" +
-         html::element("html",
-                       html::element("head", head) +
-                           html::element("body", body + data + html::element("script", "", {{"src", "assets/report.js"}})),
-                       {{"lang", "en"}}) +
+         html::element(
+             "html",
+             html::element("head", head) +
+                 html::element("body",
+                               body + data + html::element("script", "", {{"src", "assets/report.js"}})),
+             {{"lang", "en"}}) +
          "\n";
 }
 
@@ -141,7 +154,8 @@ void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<Ma
   constexpr std::string_view ReportAsset = "report/";
   for (const EmbeddedAsset& asset : embeddedAssets())
     if (asset.name.substr(0, ReportAsset.size()) == ReportAsset)
-      writeTextFileAtomically(dir / "assets" / std::string(asset.name.substr(ReportAsset.size())), asset.text());
+      writeTextFileAtomically(dir / "assets" / std::string(asset.name.substr(ReportAsset.size())),
+                              asset.text());
   json summary = json::array();
   bool allPassed = true;
   for (const MaterialReport& m : materials) {
@@ -149,20 +163,19 @@ void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<Ma
     writeTextFileAtomically(dir / m.folder / "data.json", materialDataJson(m).dump(1) + "\n");
     json numbers = json::object();
     for (const auto& [label, value] : m.keyNumbers) numbers[label] = value;
-    summary.push_back({{"name", m.name}, {"kind", m.kind}, {"passed", m.passed}, {"verdict", m.verdict},
-                       {"key_numbers", numbers}, {"folder", m.folder}, {"data", m.folder + "/data.json"}});
+    summary.push_back({{"name", m.name},
+                       {"kind", m.kind},
+                       {"passed", m.passed},
+                       {"verdict", m.verdict},
+                       {"key_numbers", numbers},
+                       {"folder", m.folder},
+                       {"data", m.folder + "/data.json"}});
     allPassed = allPassed && m.passed;
   }
   writeTextFileAtomically(dir / "index.html", reportHtml(run, materials));
-  const json report{{"generator", ReportGenerator},
-                    {"mode", run.mode},
-                    {"created_at", run.createdAt},
-                    {"command", run.command},
-                    {"passed", allPassed},
-                    {"settings", run.settings},
-                    {"materials", summary},
-                    {"timings", run.timings},
-                    {"chart_js", chartJsVersion()}};
+  const json report{{"generator", ReportGenerator}, {"mode", run.mode},       {"created_at", run.createdAt},
+                    {"command", run.command},       {"passed", allPassed},    {"settings", run.settings},
+                    {"materials", summary},         {"timings", run.timings}, {"chart_js", chartJsVersion()}};
   writeTextFileAtomically(dir / ReportMarkerFile, report.dump(1) + "\n");
 }
 

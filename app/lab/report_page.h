@@ -20,14 +20,15 @@ inline constexpr const char* ReportGenerator = "scatterlab lab";
 
 struct ReportRun {
   std::string title = "scatterlab lab report";
-  std::string mode;        // "quick" or "full"
-  std::string createdAt;   // ISO 8601, UTC
+  std::string mode;       // "quick" or "full"
+  std::string createdAt;  // ISO 8601, UTC
   nlohmann::json settings = nlohmann::json::object();
   nlohmann::json timings = nlohmann::json::object();  // PhaseTimer::toJson()
-  std::string command;     // the command line
+  std::string command;                                // the command line
 };
 
-void writeReport(const std::filesystem::path& dir, const ReportRun& run, const std::vector<MaterialReport>& materials);
+void writeReport(const std::filesystem::path& dir, const ReportRun& run,
+                 const std::vector<MaterialReport>& materials);
 
 // The page alone (for tests).
 std::string reportHtml(const ReportRun& run, const std::vector<MaterialReport>& materials);

@@ -13,7 +13,7 @@
 namespace scatterlab {
 
 struct ReportSection {
-  std::string id;     // "check", "plots", ... (the anchor is FOLDER-ID)
+  std::string id;  // "check", "plots", ... (the anchor is FOLDER-ID)
   std::string title;
   std::string html;
   std::vector<Chart> charts;

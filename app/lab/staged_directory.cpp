@@ -41,7 +41,8 @@ bool isEmptyDirectory(const fs::path& directory) {
 
 }  // namespace
 
-bool isGeneratedDirectory(const fs::path& directory, const std::string& markerFile, const std::string& generator) {
+bool isGeneratedDirectory(const fs::path& directory, const std::string& markerFile,
+                          const std::string& generator) {
   std::ifstream in(directory / markerFile);
   if (!in) return false;
   const nlohmann::json marker = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
@@ -51,7 +52,8 @@ bool isGeneratedDirectory(const fs::path& directory, const std::string& markerFi
 StagedDirectory::StagedDirectory(fs::path target, std::string markerFile, std::string generator,
                                  std::string optionName)
     : target_(std::move(target)) {
-  const std::string allowed = "; allowed: a new path, an empty directory, or a report this command wrote before";
+  const std::string allowed =
+      "; allowed: a new path, an empty directory, or a report this command wrote before";
   if (target_.empty()) throw InputError(optionName + ": an empty path" + allowed);
   target_ = fs::absolute(target_).lexically_normal();
   if (target_.filename().empty()) target_ = target_.parent_path();  // "dir/" names "dir"
@@ -73,8 +75,9 @@ StagedDirectory::StagedDirectory(fs::path target, std::string markerFile, std::s
   }
   staging_ = siblingName(target_, "partial");
   if (!fs::create_directory(staging_, error) || error)
-    throw InputError(optionName + ": cannot create " + inQuotes(staging_) + " beside " + inQuotes(target_) + " (" +
-                     (error ? error.message() : "it exists") + "); allowed: a path in a writable directory");
+    throw InputError(optionName + ": cannot create " + inQuotes(staging_) + " beside " + inQuotes(target_) +
+                     " (" + (error ? error.message() : "it exists") +
+                     "); allowed: a path in a writable directory");
 }
 
 StagedDirectory::~StagedDirectory() {

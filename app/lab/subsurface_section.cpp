@@ -27,8 +27,10 @@ Chart profileChart(const std::string& id, const SubsurfaceComparison& c) {
   chart.yLabel = "R (1/mm^2)";
   chart.logX = chart.logY = true;
   for (int ch = 0; ch < 3; ++ch) {
-    ChartSeries profile{std::string(ChannelNames[ch]) + " profile", channelColor(ch), SeriesStyle::Line, {}, {}, {}};
-    ChartSeries walk{std::string(ChannelNames[ch]) + " walk", channelColor(ch), SeriesStyle::Points, {}, {}, {}};
+    ChartSeries profile{
+        std::string(ChannelNames[ch]) + " profile", channelColor(ch), SeriesStyle::Line, {}, {}, {}};
+    ChartSeries walk{
+        std::string(ChannelNames[ch]) + " walk", channelColor(ch), SeriesStyle::Points, {}, {}, {}};
     const HalfSpaceWalkResult& w = c.walk[size_t(ch)];
     for (size_t k = 0; k + 1 < c.edges.size(); ++k) {
       const double r = annulusCentre(c.edges, k);
@@ -64,14 +66,15 @@ Chart ratioChart(const std::string& id, const SubsurfaceComparison& c) {
     }
     chart.series.push_back(std::move(ratio));
   }
-  chart.series.push_back({"equal", "#999999", SeriesStyle::Guide, {{c.edges[1], 1}, {c.edges.back(), 1}}, {}, {}});
+  chart.series.push_back(
+      {"equal", "#999999", SeriesStyle::Guide, {{c.edges[1], 1}, {c.edges.back(), 1}}, {}, {}});
   return chart;
 }
 
 std::string totalsTable(const SubsurfaceComparison& c) {
   std::string head;
-  for (const char* column :
-       {"channel", "profile Rd", "random walk Rd", "+- se", "profile - walk", "in walk se", "paths per channel"})
+  for (const char* column : {"channel", "profile Rd", "random walk Rd", "+- se", "profile - walk",
+                             "in walk se", "paths per channel"})
     head += html::textElement("th", column);
   std::string body;
   for (int ch = 0; ch < 3; ++ch) {
@@ -87,7 +90,8 @@ std::string totalsTable(const SubsurfaceComparison& c) {
                   html::textElement("td", html::number(sigmas, 3), {{"class", "num"}}) +
                   html::textElement("td", std::to_string(w.settings.paths), {{"class", "num"}}));
   }
-  return html::element("table", html::element("thead", html::element("tr", head)) + html::element("tbody", body),
+  return html::element("table",
+                       html::element("thead", html::element("tr", head)) + html::element("tbody", body),
                        {{"class", "rows totals"}});
 }
 
@@ -105,8 +109,8 @@ SubsurfaceComparison compareWithWalk(const SubsurfaceMaterial& material, const L
     const HalfSpaceWalkSettings walk =
         mediumWalkSettings(material.medium, ch, c.edges, settings.walkPaths, settings.seed, 0);
     const std::string stage = std::string("walk ") + ChannelNames[ch];
-    c.walk.push_back(simulateHalfSpace(walk, progress ? WalkProgress([&](double f) { progress(stage, (ch + f) / 3.0); })
-                                                      : WalkProgress()));
+    c.walk.push_back(simulateHalfSpace(
+        walk, progress ? WalkProgress([&](double f) { progress(stage, (ch + f) / 3.0); }) : WalkProgress()));
   }
   return c;
 }
@@ -120,19 +124,20 @@ ReportSection subsurfaceSection(const LabMaterial& material, const SubsurfaceCom
   section.charts.push_back(ratioChart(material.folder + "-profile-ratio", c));
   const ScatteringMedium& m = s.medium;
   const std::string medium = "sigma_s (" + html::number(m.sigmaS.x) + ", " + html::number(m.sigmaS.y) + ", " +
-                             html::number(m.sigmaS.z) + ") mm^-1, sigma_a (" + html::number(m.sigmaA.x) + ", " +
-                             html::number(m.sigmaA.y) + ", " + html::number(m.sigmaA.z) + ") mm^-1, g " +
-                             html::number(m.g) + ", eta " + html::number(m.eta);
+                             html::number(m.sigmaS.z) + ") mm^-1, sigma_a (" + html::number(m.sigmaA.x) +
+                             ", " + html::number(m.sigmaA.y) + ", " + html::number(m.sigmaA.z) +
+                             ") mm^-1, g " + html::number(m.g) + ", eta " + html::number(m.eta);
   std::string charts;
   for (const Chart& chart : section.charts) charts += chartFigure(chart);
-  section.html =
-      html::textElement("p", "Profile " + s.profile->name() + " in the medium " + medium +
-                                 ". The ground truth is the volumetric random walk in the half-space (searchlight at "
-                                 "normal incidence, Henyey-Greenstein phase function, Fresnel boundary), tallied on "
-                                 "the same annuli; its standard errors are exact (binomial).",
-                        {{"class", "small"}}) +
-      html::textElement("h4", "Total diffuse reflectance") + totalsTable(c) +
-      html::element("div", charts, {{"class", "chart-grid"}});
+  section.html = html::textElement(
+                     "p",
+                     "Profile " + s.profile->name() + " in the medium " + medium +
+                         ". The ground truth is the volumetric random walk in the half-space (searchlight at "
+                         "normal incidence, Henyey-Greenstein phase function, Fresnel boundary), tallied on "
+                         "the same annuli; its standard errors are exact (binomial).",
+                     {{"class", "small"}}) +
+                 html::textElement("h4", "Total diffuse reflectance") + totalsTable(c) +
+                 html::element("div", charts, {{"class", "chart-grid"}});
 
   json channels = json::array();
   for (int ch = 0; ch < 3; ++ch) {

@@ -33,21 +33,22 @@ template <typename T> T ashikhminShirleyLobe(const T& nu, const T& nv, const Vec
 }
 
 // Specular lobe (eq. 4) times an RGB scale (1 in the paper, Ngan's albedo). T = double or Jet.
-template <typename T>
-RgbT<T> ashikhminShirleySpecularEval(const RgbT<T>& scale, const RgbT<T>& rs, const T& nu, const T& nv,
-                                     const Vec3<T>& wi, const Vec3<T>& wo) {
+template <typename T> RgbT<T> ashikhminShirleySpecularEval(const RgbT<T>& scale, const RgbT<T>& rs,
+                                                           const T& nu, const T& nv, const Vec3<T>& wi,
+                                                           const Vec3<T>& wo) {
   using std::sqrt;
   if (!(wi.z > T(0)) || !(wo.z > T(0))) return RgbT<T>(T(0));
   const Vec3<T> h = reflectionHalfVector(wi, wo);
   const T cosIH = glm::dot(wi, h);
   const T maxCos = wi.z > wo.z ? wi.z : wo.z;
-  const T lobe = sqrt((nu + T(1)) * (nv + T(1))) / T(8.0 * Pi) * ashikhminShirleyLobe(nu, nv, h) / (cosIH * maxCos);
+  const T lobe =
+      sqrt((nu + T(1)) * (nv + T(1))) / T(8.0 * Pi) * ashikhminShirleyLobe(nu, nv, h) / (cosIH * maxCos);
   return scale * fresnelSchlick(rs, cosIH) * lobe;
 }
 
 // Diffuse term (eq. 5).
-template <typename T>
-RgbT<T> ashikhminShirleyDiffuseEval(const RgbT<T>& rd, const RgbT<T>& rs, const Vec3<T>& wi, const Vec3<T>& wo) {
+template <typename T> RgbT<T> ashikhminShirleyDiffuseEval(const RgbT<T>& rd, const RgbT<T>& rs,
+                                                          const Vec3<T>& wi, const Vec3<T>& wo) {
   if (!(wi.z > T(0)) || !(wo.z > T(0))) return RgbT<T>(T(0));
   const auto fifth = [](const T& x) {
     const T x2 = x * x;
@@ -78,8 +79,9 @@ class AshikhminShirleyBsdf final : public BsdfModel {
     if (!(wi.z > 0) || !(wo.z > 0)) return 0.0;
     const Vec3d h = reflectionHalfVector(wi, wo);
     const double specular = reflectedDensity(halfVectorPdf(h), wo, h);
-    return diffuse_ ? specularProbability_ * specular + (1.0 - specularProbability_) * cosineHemispherePdf(wo.z)
-                    : specular;
+    return diffuse_
+               ? specularProbability_ * specular + (1.0 - specularProbability_) * cosineHemispherePdf(wo.z)
+               : specular;
   }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
@@ -95,7 +97,8 @@ class AshikhminShirleyBsdf final : public BsdfModel {
   }
 
   LobeFlags flags() const override {
-    return diffuse_ ? LobeFlags::GlossyReflection | LobeFlags::DiffuseReflection : LobeFlags::GlossyReflection;
+    return diffuse_ ? LobeFlags::GlossyReflection | LobeFlags::DiffuseReflection
+                    : LobeFlags::GlossyReflection;
   }
 
   // p(h) = sqrt((nu+1)(nv+1)) / (2 pi) (n.h)^(nu cos^2 phi + nv sin^2 phi) (eq. 8).
@@ -133,15 +136,20 @@ class AshikhminShirleyBsdf final : public BsdfModel {
 
  private:
   AshikhminShirleyBsdf(double nu, double nv, const Rgb& rs, const Rgb& scale, const Rgb& rd, bool diffuse)
-      : nu_(nu), nv_(nv), rs_(rs), scale_(scale), rd_(rd), diffuse_(diffuse),
-        normalization_(std::sqrt((nu + 1.0) * (nv + 1.0))), anisotropyRatio_(std::sqrt((nu + 1.0) / (nv + 1.0))) {
+      : nu_(nu),
+        nv_(nv),
+        rs_(rs),
+        scale_(scale),
+        rd_(rd),
+        diffuse_(diffuse),
+        normalization_(std::sqrt((nu + 1.0) * (nv + 1.0))),
+        anisotropyRatio_(std::sqrt((nu + 1.0) / (nv + 1.0))) {
     if (!(nu >= 0) || !(nv >= 0) || !std::isfinite(nu) || !std::isfinite(nv))
       throw std::invalid_argument("Ashikhmin-Shirley: exponents must be finite and >= 0");
     // Lobe choice in proportion to the lobes' normal-incidence weights (specular ~ Rs, diffuse
     // ~ Rd (1 - Rs)), kept in [0.1, 0.9] so that neither lobe is left unsampled.
     const double specularWeight = (scale.x * rs.x + scale.y * rs.y + scale.z * rs.z) / 3.0;
-    const double diffuseWeight =
-        (rd.x * (1.0 - rs.x) + rd.y * (1.0 - rs.y) + rd.z * (1.0 - rs.z)) / 3.0;
+    const double diffuseWeight = (rd.x * (1.0 - rs.x) + rd.y * (1.0 - rs.y) + rd.z * (1.0 - rs.z)) / 3.0;
     const double total = specularWeight + diffuseWeight;
     specularProbability_ = std::clamp(total > 0 ? specularWeight / total : 0.5, 0.1, 0.9);
   }

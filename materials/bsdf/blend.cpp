@@ -15,7 +15,9 @@ bool isTransmissive(const BsdfModel& model) { return hasAny(model.flags(), LobeF
 }  // namespace
 
 BlendBsdf::BlendBsdf(std::unique_ptr<BsdfModel> first, std::unique_ptr<BsdfModel> second, const Rgb& weight)
-    : first_(std::move(first)), second_(std::move(second)), weight_(weight),
+    : first_(std::move(first)),
+      second_(std::move(second)),
+      weight_(weight),
       firstProbability_((weight.x + weight.y + weight.z) / 3.0) {
   if (!first_ || !second_) throw std::invalid_argument("blend: both models are needed");
   for (int c = 0; c < 3; ++c)
@@ -30,8 +32,10 @@ BlendBsdf::BlendBsdf(std::unique_ptr<BsdfModel> first, std::unique_ptr<BsdfModel
   if (firstTransmits && secondTransmits && first_->interiorIndex() != second_->interiorIndex())
     throw std::invalid_argument("blend: the two models transmit into different media (interior indices " +
                                 std::to_string(first_->interiorIndex()) + " and " +
-                                std::to_string(second_->interiorIndex()) + "); there is one medium below a surface");
-  interiorIndex_ = firstTransmits ? first_->interiorIndex() : (secondTransmits ? second_->interiorIndex() : 1.0);
+                                std::to_string(second_->interiorIndex()) +
+                                "); there is one medium below a surface");
+  interiorIndex_ =
+      firstTransmits ? first_->interiorIndex() : (secondTransmits ? second_->interiorIndex() : 1.0);
 }
 
 bool BlendBsdf::isLossless() const {
@@ -53,11 +57,12 @@ double BlendBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) cons
   return density;
 }
 
-std::optional<BsdfSample> BlendBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode mode) const {
+std::optional<BsdfSample> BlendBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                            TransportMode mode) const {
   const bool chooseFirst = uLobe < firstProbability_;
   const double probability = chooseFirst ? firstProbability_ : 1.0 - firstProbability_;
-  const double remapped =
-      std::min(chooseFirst ? uLobe / firstProbability_ : (uLobe - firstProbability_) / probability, OneMinusEpsilon);
+  const double remapped = std::min(
+      chooseFirst ? uLobe / firstProbability_ : (uLobe - firstProbability_) / probability, OneMinusEpsilon);
   std::optional<BsdfSample> s = (chooseFirst ? first_ : second_)->sample(wi, remapped, u, mode);
   if (!s) return s;
   if (s->isDelta()) {

@@ -70,7 +70,8 @@ class BsdfModel {
   virtual ~BsdfModel() = default;
 
   virtual Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode = TransportMode::Radiance) const = 0;
-  virtual double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode = TransportMode::Radiance) const = 0;
+  virtual double pdf(const Vec3d& wi, const Vec3d& wo,
+                     TransportMode mode = TransportMode::Radiance) const = 0;
   virtual std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                            TransportMode mode = TransportMode::Radiance) const = 0;
   // The union of the lobes this model can produce.

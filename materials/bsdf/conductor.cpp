@@ -12,7 +12,8 @@ std::unique_ptr<BsdfModel> makeMicrofacetConductor(MicrofacetType type, double a
   // D divides by both roughnesses: 0 or a non-finite value has no meaningful lobe.
   for (const double alpha : {alphaX, alphaY}) {
     if (!(alpha > 0.0) || !std::isfinite(alpha))
-      throw std::invalid_argument("microfacet roughness must be positive and finite, got " + std::to_string(alpha));
+      throw std::invalid_argument("microfacet roughness must be positive and finite, got " +
+                                  std::to_string(alpha));
   }
   switch (type) {
     case MicrofacetType::Ggx:

@@ -160,9 +160,9 @@ template <typename Distribution> class MicrofacetConductorBsdf final : public Bs
 // The conductor for the registry. alphaX and alphaY must be positive and finite, and at most 1
 // with compensation (std::invalid_argument otherwise; the registry reports the allowed range to
 // the user).
-std::unique_ptr<BsdfModel> makeMicrofacetConductor(MicrofacetType type, double alphaX, double alphaY,
-                                                   const Rgb& eta, const Rgb& k,
-                                                   MicrofacetSampling sampling = MicrofacetSampling::Visible,
-                                                   MultipleScattering multipleScattering = MultipleScattering::None);
+std::unique_ptr<BsdfModel> makeMicrofacetConductor(
+    MicrofacetType type, double alphaX, double alphaY, const Rgb& eta, const Rgb& k,
+    MicrofacetSampling sampling = MicrofacetSampling::Visible,
+    MultipleScattering multipleScattering = MultipleScattering::None);
 
 }  // namespace scatterlab

@@ -33,9 +33,8 @@ template <typename T> T vGrooveShadowing(const Vec3<T>& wi, const Vec3<T>& wo, c
 }
 
 // The kernel shared by rendering and fitting (T = double or ceres::Jet).
-template <typename T>
-RgbT<T> nganCookTorranceEval(const RgbT<T>& albedo, const T& f0, const T& roughness, const Vec3<T>& wi,
-                             const Vec3<T>& wo) {
+template <typename T> RgbT<T> nganCookTorranceEval(const RgbT<T>& albedo, const T& f0, const T& roughness,
+                                                   const Vec3<T>& wi, const Vec3<T>& wo) {
   if (!(wi.z > T(0)) || !(wo.z > T(0))) return RgbT<T>(T(0));
   const Vec3<T> h = reflectionHalfVector(wi, wo);
   const T d = BeckmannDistribution<T>(roughness, roughness).D(h);

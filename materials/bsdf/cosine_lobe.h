@@ -27,7 +27,9 @@ template <typename T, typename C> T normalizedCosinePower(const C& c, const T& n
 }
 
 // The density (n+1)/(2 pi) max(cos, 0)^n about an axis, per solid angle.
-inline double cosinePowerPdf(double cosAxis, double n) { return (n + 1.0) * Inv2Pi * clampedCosinePower(cosAxis, n); }
+inline double cosinePowerPdf(double cosAxis, double n) {
+  return (n + 1.0) * Inv2Pi * clampedCosinePower(cosAxis, n);
+}
 
 // A direction about +z with density cosinePowerPdf(w.z, n): cos = u0^(1/(n+1)), phi = 2 pi u1.
 inline Vec3d sampleCosinePower(const Vec2d& u, double n) {

@@ -46,7 +46,8 @@ DisneyBsdf::DisneyBsdf(const DisneyParameters& p) : parameters_(p), terms_(disne
 // wi enter, so pdf() is the exact density of the mixture.
 DisneyBsdf::LobeProbabilities DisneyBsdf::lobeProbabilities(const Vec3d& wi) const {
   const double cosI = std::clamp(wi.z, 0.0, 1.0);
-  const double diffuse = hasDiffuse_ ? terms_.dielectric * (disneyLuminance(terms_.base) + parameters_.sheen) : 0.0;
+  const double diffuse =
+      hasDiffuse_ ? terms_.dielectric * (disneyLuminance(terms_.base) + parameters_.sheen) : 0.0;
   const double specular = disneyLuminance(fresnelSchlick(terms_.specularF0, cosI));
   const double clearcoat = hasClearcoat_ ? terms_.clearcoatWeight * fresnelSchlick(0.04, cosI) : 0.0;
   const double total = diffuse + specular + clearcoat;
@@ -70,7 +71,8 @@ double DisneyBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const {
   return density;
 }
 
-std::optional<BsdfSample> DisneyBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const {
+std::optional<BsdfSample> DisneyBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                             TransportMode) const {
   if (!(wi.z > 0)) return std::nullopt;
   const LobeProbabilities p = lobeProbabilities(wi);
   Vec3d wo;

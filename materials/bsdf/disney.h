@@ -72,16 +72,18 @@ template <typename T> struct DisneyParametersT {
 using DisneyParameters = DisneyParametersT<double>;
 
 // disney.brdf's luminance approximation.
-template <typename T> T disneyLuminance(const RgbT<T>& c) { return T(0.3) * c.x + T(0.6) * c.y + T(0.1) * c.z; }
+template <typename T> T disneyLuminance(const RgbT<T>& c) {
+  return T(0.3) * c.x + T(0.6) * c.y + T(0.1) * c.z;
+}
 
 // What the parameters determine, independent of the directions.
 template <typename T> struct DisneyTerms {
-  RgbT<T> base;           // Cdlin
-  RgbT<T> specularF0;     // Cspec0
-  RgbT<T> sheenColor;     // sheen mix(1, Ctint, sheenTint)
-  T dielectric;           // 1 - metallic: the weight of diffuse, subsurface and sheen
+  RgbT<T> base;        // Cdlin
+  RgbT<T> specularF0;  // Cspec0
+  RgbT<T> sheenColor;  // sheen mix(1, Ctint, sheenTint)
+  T dielectric;        // 1 - metallic: the weight of diffuse, subsurface and sheen
   T roughness, subsurface;
-  T clearcoatWeight;      // 0.25 clearcoat
+  T clearcoatWeight;  // 0.25 clearcoat
   GgxDistribution<T> specular;
   Gtr1Distribution<T> clearcoat;
   GgxDistribution<T> clearcoatMasking;  // GGX alpha 0.25: only its Smith G1 is used
@@ -119,7 +121,7 @@ template <typename T> DisneyTerms<T> disneyTerms(const DisneyParametersT<T>& p) 
 
 // The BRDF lobe by lobe (without the cosine of wo, bsdf.h conventions); their sum is f.
 template <typename T> struct DisneyLobes {
-  RgbT<T> diffuse;    // mix(Fd, ss, subsurface) base (1 - metallic) / pi
+  RgbT<T> diffuse;  // mix(Fd, ss, subsurface) base (1 - metallic) / pi
   RgbT<T> sheen;
   RgbT<T> specular;
   RgbT<T> clearcoat;
@@ -147,7 +149,8 @@ DisneyLobes<T> disneyEvalLobes(const DisneyTerms<T>& terms, const Vec3<T>& wi, c
   const T diffuse = retroReflection + terms.subsurface * (subsurface - retroReflection);
 
   const T inverseCosines = T(1) / (T(4) * wi.z * wo.z);
-  const T specularShape = terms.specular.D(h) * terms.specular.G1(wi) * terms.specular.G1(wo) * inverseCosines;
+  const T specularShape =
+      terms.specular.D(h) * terms.specular.G1(wi) * terms.specular.G1(wo) * inverseCosines;
   const T clearcoatShape =
       terms.clearcoat.D(h) * terms.clearcoatMasking.G1(wi) * terms.clearcoatMasking.G1(wo) * inverseCosines;
   return DisneyLobes<T>{terms.base * (diffuse * terms.dielectric * T(InvPi)),
@@ -156,7 +159,8 @@ DisneyLobes<T> disneyEvalLobes(const DisneyTerms<T>& terms, const Vec3<T>& wi, c
                         RgbT<T>(terms.clearcoatWeight * fresnelSchlick(T(0.04), cosD) * clearcoatShape)};
 }
 
-template <typename T> RgbT<T> disneyEval(const DisneyParametersT<T>& p, const Vec3<T>& wi, const Vec3<T>& wo) {
+template <typename T>
+RgbT<T> disneyEval(const DisneyParametersT<T>& p, const Vec3<T>& wi, const Vec3<T>& wo) {
   return disneyEvalLobes(disneyTerms(p), wi, wo).sum();
 }
 
@@ -172,7 +176,8 @@ class DisneyBsdf final : public BsdfModel {
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override;
   LobeFlags flags() const override {
-    return hasDiffuse_ ? LobeFlags::DiffuseReflection | LobeFlags::GlossyReflection : LobeFlags::GlossyReflection;
+    return hasDiffuse_ ? LobeFlags::DiffuseReflection | LobeFlags::GlossyReflection
+                       : LobeFlags::GlossyReflection;
   }
   bool isLossless() const override { return false; }
 

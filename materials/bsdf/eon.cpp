@@ -49,7 +49,8 @@ double EonCltc::pdf(const Vec3d& wo) const {
 double EonBsdf::uniformProbability(double mu, double r) {
   if (!(r > 0)) return 0.0;
   mu = std::clamp(mu, 0.0, 1.0);
-  return std::clamp(std::pow(r, 0.1) * (0.162925 + mu * (-0.372058 + (0.538233 - 0.290822 * mu) * mu)), 0.0, 1.0);
+  return std::clamp(std::pow(r, 0.1) * (0.162925 + mu * (-0.372058 + (0.538233 - 0.290822 * mu) * mu)), 0.0,
+                    1.0);
 }
 
 double EonBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const {
@@ -58,11 +59,13 @@ double EonBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const {
   return pUniform * uniformHemispherePdf() + (1.0 - pUniform) * EonCltc(wi, r_).pdf(wo);
 }
 
-std::optional<BsdfSample> EonBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const {
+std::optional<BsdfSample> EonBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                          TransportMode) const {
   if (!(wi.z > 0)) return std::nullopt;
   const double pUniform = uniformProbability(wi.z, r_);
   const EonCltc cltc(wi, r_);
-  const std::optional<Vec3d> wo = uLobe < pUniform ? std::optional<Vec3d>(sampleUniformHemisphere(u)) : cltc.sample(u);
+  const std::optional<Vec3d> wo =
+      uLobe < pUniform ? std::optional<Vec3d>(sampleUniformHemisphere(u)) : cltc.sample(u);
   if (!wo || !(wo->z > 0)) return std::nullopt;
   // The mixture's density, computed as pdf() computes it.
   const double density = pUniform * uniformHemispherePdf() + (1.0 - pUniform) * cltc.pdf(*wo);

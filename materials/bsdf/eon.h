@@ -102,7 +102,7 @@ class EonCltc {
  private:
   Vec3d x_{1, 0, 0}, y_{0, 1, 0};  // the frame's tangent axes; z is the normal
   double a_ = 1, b_ = 0, c_ = 1, d_ = 0;
-  double s_ = 1;                   // the unclipped share of the disk
+  double s_ = 1;  // the unclipped share of the disk
 };
 
 class EonBsdf final : public BsdfModel {

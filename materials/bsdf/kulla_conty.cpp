@@ -38,8 +38,8 @@ double LossLobeSampler::projectedAlpha(double cosPhi, double sinPhi) const {
   return std::sqrt(sqr(alphaX_ * cosPhi) + sqr(alphaY_ * sinPhi));
 }
 
-LossLobeSampler::LossLobeSampler(const std::function<double(const Vec3d&)>& loss, double averageLoss, double alphaX,
-                                 double alphaY)
+LossLobeSampler::LossLobeSampler(const std::function<double(const Vec3d&)>& loss, double averageLoss,
+                                 double alphaX, double alphaY)
     : alphaX_(alphaX), alphaY_(alphaY) {
   const int azimuths = alphaX == alphaY ? 2 : AnisotropicAzimuthNodes;
   std::vector<double> phiEdges(azimuths), vEdges(CosNodes), values;

@@ -59,7 +59,8 @@ template <typename T> RgbT<T> kullaContyFresnel(const RgbT<T>& fresnelAverage, c
 class LossLobeSampler {
  public:
   LossLobeSampler() = default;
-  LossLobeSampler(const std::function<double(const Vec3d&)>& loss, double averageLoss, double alphaX, double alphaY);
+  LossLobeSampler(const std::function<double(const Vec3d&)>& loss, double averageLoss, double alphaX,
+                  double alphaY);
 
   // A direction above the surface (nothing on the measure-zero rim), and its density per solid
   // angle; pdf is 0 for wo.z <= 0.

@@ -36,9 +36,9 @@ template <typename T> T lafortunePeak(const Vec3<T>& c) {
 // rho (n+2) / (2 pi max(Cz^2, Cxy^2)^(n/2)) max(0, d)^n, evaluated as rho (n+2)/(2 pi)
 // max(0, d / peak)^n so that neither factor under- or overflows at large n. A lobe with C = 0
 // contributes 0.
-template <typename T>
-RgbT<T> lafortuneLobeEval(const LafortuneLobeT<T>& lobe, LafortuneNormalization normalization, const Vec3d& wi,
-                          const Vec3d& wo) {
+template <typename T> RgbT<T> lafortuneLobeEval(const LafortuneLobeT<T>& lobe,
+                                                LafortuneNormalization normalization, const Vec3d& wi,
+                                                const Vec3d& wo) {
   const T d = lobe.c.x * T(wi.x * wo.x) + lobe.c.y * T(wi.y * wo.y) + lobe.c.z * T(wi.z * wo.z);
   if (normalization == LafortuneNormalization::None) return lobe.rho * clampedCosinePower(d, lobe.n);
   const T peak = lafortunePeak(lobe.c);
@@ -46,9 +46,9 @@ RgbT<T> lafortuneLobeEval(const LafortuneLobeT<T>& lobe, LafortuneNormalization 
   return lobe.rho * normalizedCosinePower(d / peak, lobe.n);
 }
 
-template <typename T>
-RgbT<T> lafortuneEval(const RgbT<T>& kd, const std::vector<LafortuneLobeT<T>>& lobes,
-                      LafortuneNormalization normalization, const Vec3d& wi, const Vec3d& wo) {
+template <typename T> RgbT<T> lafortuneEval(const RgbT<T>& kd, const std::vector<LafortuneLobeT<T>>& lobes,
+                                            LafortuneNormalization normalization, const Vec3d& wi,
+                                            const Vec3d& wo) {
   if (!(wi.z > 0) || !(wo.z > 0)) return RgbT<T>(T(0));
   RgbT<T> f = kd * T(InvPi);
   for (const auto& lobe : lobes) f += lafortuneLobeEval(lobe, normalization, wi, wo);
@@ -66,8 +66,8 @@ class LafortuneBsdf final : public BsdfModel {
   LafortuneBsdf(const Rgb& kd, std::vector<LafortuneLobe> lobes, LafortuneNormalization normalization)
       : kd_(kd), lobes_(std::move(lobes)), normalization_(normalization) {
     if (lobes_.size() > MaxLobes)
-      throw std::invalid_argument("a Lafortune BRDF has at most " + std::to_string(MaxLobes) + " lobes, got " +
-                                  std::to_string(lobes_.size()));
+      throw std::invalid_argument("a Lafortune BRDF has at most " + std::to_string(MaxLobes) +
+                                  " lobes, got " + std::to_string(lobes_.size()));
   }
 
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {

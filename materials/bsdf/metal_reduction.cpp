@@ -108,7 +108,8 @@ Rgb normalIncidenceReflectanceRgb(const Spectrum& eta, const Spectrum& k) {
 MetalIor reduceMetalSpectra(const char* name, const Spectrum& eta, const Spectrum& k) {
   const auto [first, last] = integrationRange(eta, k);
   const auto positiveMatching = [](double lambda) { return glm::max(rec709Matching(lambda), Rgb(0.0)); };
-  const Rgb weightedEta = integrate<Rgb>(first, last, [&](double lambda) { return eta.at(lambda) * positiveMatching(lambda); });
+  const Rgb weightedEta =
+      integrate<Rgb>(first, last, [&](double lambda) { return eta.at(lambda) * positiveMatching(lambda); });
   const Rgb weight = integrate<Rgb>(first, last, positiveMatching);
   const Rgb meanEta = weightedEta / weight;
   const Rgb reflectance = normalIncidenceReflectanceRgb(eta, k);

@@ -66,7 +66,10 @@ inline double inverseErfc(double q) {
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double e = std::erfc(y);
     const double excess = std::log(e) - logQ;  // decreasing in y
-    if (excess > 0) lo = y; else hi = y;
+    if (excess > 0)
+      lo = y;
+    else
+      hi = y;
     const double slope = -2.0 / SqrtPi * std::exp(-y * y) / e;
     const double newton = y - excess / slope;
     // Tested before the bracket: a converged step may land on the bracket's end.
@@ -117,7 +120,8 @@ template <typename Derived, typename T> class SmithMicrofacet {
   T G2(const Vec3<T>& wi, const Vec3<T>& wo) const {
     using std::abs;
     const T cosI = abs(wi.z), cosO = abs(wo.z);
-    const T denominator = cosI * cosO + (cosO * derived().backfacingArea(wi) + cosI * derived().backfacingArea(wo));
+    const T denominator =
+        cosI * cosO + (cosO * derived().backfacingArea(wi) + cosI * derived().backfacingArea(wo));
     return denominator > T(0) ? cosI * cosO / denominator : T(0);
   }
 
@@ -253,7 +257,8 @@ template <typename T> class GgxDistribution : public SmithMicrofacet<GgxDistribu
 class BeckmannVisibleSlopeX {
  public:
   BeckmannVisibleSlopeX(double cosTheta, double sinTheta)
-      : cosTheta_(cosTheta), sinTheta_(sinTheta),
+      : cosTheta_(cosTheta),
+        sinTheta_(sinTheta),
         upper_(std::min(sinTheta > 0 ? cosTheta / sinTheta : Infinity, SlopeLimit)),
         total_(unnormalizedCdf(upper_)) {}
 
@@ -275,7 +280,10 @@ class BeckmannVisibleSlopeX {
     double x = std::clamp(erfinvInitialGuess(2.0 * u - 1.0, 4.0 * u * (1.0 - u)), lo, hi);
     for (int iteration = 0; iteration < 200; ++iteration) {
       const double excess = unnormalizedCdf(x) - target;
-      if (excess > 0) hi = x; else lo = x;
+      if (excess > 0)
+        hi = x;
+      else
+        lo = x;
       const double density = unnormalizedDensity(x);
       const double tolerance = 1e-14 * (1.0 + std::abs(x));
       if (density > 0) {
@@ -398,7 +406,8 @@ template <typename T> class BeckmannDistribution : public SmithMicrofacet<Beckma
 template <typename Distribution> constexpr MicrofacetType microfacetTypeOf() {
   static_assert(std::is_same_v<Distribution, GgxDistribution<double>> ||
                 std::is_same_v<Distribution, BeckmannDistribution<double>>);
-  return std::is_same_v<Distribution, GgxDistribution<double>> ? MicrofacetType::Ggx : MicrofacetType::Beckmann;
+  return std::is_same_v<Distribution, GgxDistribution<double>> ? MicrofacetType::Ggx
+                                                               : MicrofacetType::Beckmann;
 }
 
 }  // namespace scatterlab

@@ -27,8 +27,8 @@ constexpr size_t MaxCachedTables = 64;
 
 }  // namespace
 
-std::shared_ptr<const DielectricReflectionAlbedoTable> findAlbedoTable(int family, double alphaX, double alphaY,
-                                                                        double eta) {
+std::shared_ptr<const DielectricReflectionAlbedoTable> findAlbedoTable(int family, double alphaX,
+                                                                       double alphaY, double eta) {
   AlbedoCache& cache = albedoCache();
   const std::lock_guard lock(cache.mutex);
   const auto it = cache.tables.find({family, alphaX, alphaY, eta});

@@ -100,7 +100,8 @@ class DielectricReflectionAlbedoTable {
   DielectricReflectionAlbedoTable(const Distribution& distribution, double eta)
       : eta_(eta), offset_(std::min(0.05 * distribution.alphaX(), 2e-3)) {
     if (!distribution.isotropic())
-      throw std::invalid_argument("the dielectric reflection albedo is tabulated for isotropic roughness only");
+      throw std::invalid_argument(
+          "the dielectric reflection albedo is tabulated for isotropic roughness only");
     if (!(eta >= 1.0)) throw std::invalid_argument("the albedo table needs eta >= 1");
     placeNodes();
     ratio_.resize(nodeCos_.size());
@@ -133,8 +134,8 @@ class DielectricReflectionAlbedoTable {
 };
 
 namespace detail {
-std::shared_ptr<const DielectricReflectionAlbedoTable> findAlbedoTable(int family, double alphaX, double alphaY,
-                                                                        double eta);
+std::shared_ptr<const DielectricReflectionAlbedoTable> findAlbedoTable(int family, double alphaX,
+                                                                       double alphaY, double eta);
 void storeAlbedoTable(int family, double alphaX, double alphaY, double eta,
                       std::shared_ptr<const DielectricReflectionAlbedoTable> table);
 }  // namespace detail

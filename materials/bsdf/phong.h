@@ -38,7 +38,9 @@ struct PhongLobe {
   static RgbT<T> eval(const RgbT<T>& kd, const RgbT<T>& ks, const T& n, const Vec3d& wi, const Vec3d& wo) {
     return phongEval(kd, ks, n, wi, wo);
   }
-  static double pdf(double n, const Vec3d& wi, const Vec3d& wo) { return cosinePowerPdf(glm::dot(mirror(wi), wo), n); }
+  static double pdf(double n, const Vec3d& wi, const Vec3d& wo) {
+    return cosinePowerPdf(glm::dot(mirror(wi), wo), n);
+  }
   static std::optional<Vec3d> sample(double n, const Vec3d& wi, const Vec2d& u) {
     return sampleCosinePowerAbout(mirror(wi), u, n);
   }
@@ -74,12 +76,14 @@ template <typename Lobe> class NormalizedPhongBsdf final : public BsdfModel {
   }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
     if (!(wi.z > 0) || !(wo.z > 0)) return 0.0;
-    return (1.0 - glossyProbability_) * cosineHemispherePdf(wo.z) + glossyProbability_ * Lobe::pdf(n_, wi, wo);
+    return (1.0 - glossyProbability_) * cosineHemispherePdf(wo.z) +
+           glossyProbability_ * Lobe::pdf(n_, wi, wo);
   }
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override {
     if (!(wi.z > 0)) return std::nullopt;
-    if (uLobe >= glossyProbability_) return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);
+    if (uLobe >= glossyProbability_)
+      return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);
     const std::optional<Vec3d> wo = Lobe::sample(n_, wi, u);
     if (!wo) return std::nullopt;
     return finishSample(*this, wi, *wo, LobeFlags::GlossyReflection);

@@ -57,7 +57,8 @@ template <typename T> Vec3<T> generalizedHalfVector(const Vec3<T>& wi, const Vec
 // d omega_h / d omega_o for wo refracted from wi about h: n_o^2 |wo.h| / (n_i wi.h + n_o wo.h)^2
 // (Walter et al. 2007 eq. 17), written with etaRel = n_o / n_i. The denominator vanishes only
 // when etaRel = 1 (Snell's law with cos_i = etaRel cos_t and sin_i = etaRel sin_t).
-template <typename T> T refractionJacobian(const Vec3<T>& wi, const Vec3<T>& wo, const Vec3<T>& h, const T& etaRel) {
+template <typename T>
+T refractionJacobian(const Vec3<T>& wi, const Vec3<T>& wo, const Vec3<T>& h, const T& etaRel) {
   using std::abs;
   const T cosOH = glm::dot(wo, h);
   const T denominator = glm::dot(wi, h) / etaRel + cosOH;

@@ -84,7 +84,9 @@ using ParameterValue = std::variant<double, Rgb, Vec2d, std::string, std::vector
 // them by name; the spec guarantees that a parameter with a default is always present.
 class MaterialParameters {
  public:
-  void set(const std::string& name, ParameterValue value) { values_.insert_or_assign(name, std::move(value)); }
+  void set(const std::string& name, ParameterValue value) {
+    values_.insert_or_assign(name, std::move(value));
+  }
   bool has(std::string_view name) const { return values_.find(name) != values_.end(); }
   // Asking for a parameter the spec does not provide, or as another kind, is a bug in the
   // build function: std::logic_error.
@@ -108,14 +110,16 @@ template <typename E> struct NamedChoice {
   E value;
 };
 
-template <typename E, size_t N> std::vector<std::string> choiceNames(const std::array<NamedChoice<E>, N>& table) {
+template <typename E, size_t N>
+std::vector<std::string> choiceNames(const std::array<NamedChoice<E>, N>& table) {
   std::vector<std::string> names;
   for (const auto& entry : table) names.emplace_back(entry.name);
   return names;
 }
 
 // The spec has already checked that `name` is one of the table's names.
-template <typename E, size_t N> E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name) {
+template <typename E, size_t N>
+E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name) {
   for (const auto& entry : table)
     if (name == entry.name) return entry.value;
   throw std::logic_error("choice \"" + std::string(name) + "\" missing from its table");
@@ -175,8 +179,8 @@ ValidatedMaterial validateMaterial(const nlohmann::json& material);
 
 // Throws the MaterialError every check of a key throws: "material key "KEY": VALUE PROBLEM;
 // allowed: ALLOWED" (for builders that check what the spec alone cannot).
-[[noreturn]] void throwMaterialKeyError(std::string_view key, const nlohmann::json& value, std::string_view problem,
-                                        std::string_view allowed);
+[[noreturn]] void throwMaterialKeyError(std::string_view key, const nlohmann::json& value,
+                                        std::string_view problem, std::string_view allowed);
 
 // Builds the BSDF a material describes; throws MaterialError on any invalid description, and
 // for a material that is not a BSDF (a subsurface material).

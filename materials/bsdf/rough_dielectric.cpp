@@ -11,14 +11,16 @@ std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alpha
   // D divides by both roughnesses: 0 or a non-finite value has no meaningful lobe.
   for (const double alpha : {alphaX, alphaY}) {
     if (!(alpha > 0.0) || !std::isfinite(alpha))
-      throw std::invalid_argument("microfacet roughness must be positive and finite, got " + std::to_string(alpha));
+      throw std::invalid_argument("microfacet roughness must be positive and finite, got " +
+                                  std::to_string(alpha));
   }
   if (!(eta > 0.0) || !std::isfinite(eta) || eta == 1.0)
-    throw std::invalid_argument("rough dielectric index must be positive, finite and not 1, got " + std::to_string(eta));
+    throw std::invalid_argument("rough dielectric index must be positive, finite and not 1, got " +
+                                std::to_string(eta));
   switch (type) {
     case MicrofacetType::Ggx:
-      return std::make_unique<RoughDielectricBsdf<GgxDistribution<double>>>(GgxDistribution<double>(alphaX, alphaY),
-                                                                            eta, multipleScattering);
+      return std::make_unique<RoughDielectricBsdf<GgxDistribution<double>>>(
+          GgxDistribution<double>(alphaX, alphaY), eta, multipleScattering);
     case MicrofacetType::Beckmann:
       return std::make_unique<RoughDielectricBsdf<BeckmannDistribution<double>>>(
           BeckmannDistribution<double>(alphaX, alphaY), eta, multipleScattering);

@@ -47,7 +47,9 @@ namespace scatterlab {
 // its reverse round identically. Built in place (no copies: see generalizedHalfVector).
 template <typename T> struct DielectricPair {
   DielectricPair(const Vec3<T>& wi, const Vec3<T>& wo, const T& eta)
-      : reflection(wi.z * wo.z > T(0)), etaRel(relativeIndex(wi, wo, eta)), h(generalizedHalfVector(wi, wo, etaRel)) {
+      : reflection(wi.z * wo.z > T(0)),
+        etaRel(relativeIndex(wi, wo, eta)),
+        h(generalizedHalfVector(wi, wo, etaRel)) {
     if (wi.z == T(0) || wo.z == T(0) || !(h.z > T(0))) return;
     cosIH = glm::dot(wi, h);
     cosOH = glm::dot(wo, h);
@@ -57,7 +59,7 @@ template <typename T> struct DielectricPair {
   }
 
   bool reflection;
-  T etaRel;  // n(wo) / n(wi): 1 for reflection
+  T etaRel;   // n(wo) / n(wi): 1 for reflection
   Vec3<T> h;  // the generalised half vector, facing up
   T cosIH = T(0), cosOH = T(0);
   T fresnel = T(0);  // F at h for the pair's light path
@@ -72,25 +74,25 @@ template <typename T> struct DielectricPair {
 // Walter's eq. 21 is written for light arriving from i and leaving along o: its factor
 // n_o^2 / (n_i i.h + n_o o.h)^2 is 1 / (wi.h / etaRel + wo.h)^2 with i = wi (importance: light
 // comes from wi) and 1 / (etaRel^2 (wi.h / etaRel + wo.h)^2) with i = wo (radiance).
-template <typename T, typename Distribution>
-T roughDielectricEval(const Distribution& distribution, const T& eta, const Vec3<T>& wi, const Vec3<T>& wo,
-                      TransportMode mode) {
+template <typename T, typename Distribution> T roughDielectricEval(const Distribution& distribution,
+                                                                   const T& eta, const Vec3<T>& wi,
+                                                                   const Vec3<T>& wo, TransportMode mode) {
   using std::abs;
   const DielectricPair<T> pair(wi, wo, eta);
   if (!pair.valid) return T(0);
   const T d = distribution.D(pair.h);
   if (pair.reflection) return pair.fresnel * d * distribution.G2(wi, wo) / abs(T(4) * wi.z * wo.z);
   const T denominator = pair.cosIH / pair.etaRel + pair.cosOH;
-  const T f = abs(pair.cosIH * pair.cosOH) * (T(1) - pair.fresnel) * d * smithG2Transmission(distribution, wi, wo) /
-              (abs(wi.z * wo.z) * denominator * denominator);
+  const T f = abs(pair.cosIH * pair.cosOH) * (T(1) - pair.fresnel) * d *
+              smithG2Transmission(distribution, wi, wo) / (abs(wi.z * wo.z) * denominator * denominator);
   return mode == TransportMode::Radiance ? f / sqr(pair.etaRel) : f;
 }
 
 // The density of sample() per solid angle of wo (the same in both transport modes), given
 // the pair's DielectricPair.
-template <typename Distribution>
-double roughDielectricPdf(const Distribution& distribution, const Vec3d& wi, const Vec3d& wo,
-                          const DielectricPair<double>& pair) {
+template <typename Distribution> double roughDielectricPdf(const Distribution& distribution, const Vec3d& wi,
+                                                           const Vec3d& wo,
+                                                           const DielectricPair<double>& pair) {
   if (!pair.valid) return 0.0;
   const double normalDensity = distribution.pdfVisible(wi.z > 0 ? wi : -wi, pair.h);
   if (pair.reflection) return reflectedDensity(normalDensity * pair.fresnel, wo, pair.h);
@@ -115,8 +117,9 @@ Vec3d sampleRoughDielectricNormal(const Distribution& distribution, const Vec3d&
 // internal reflection forbids the refraction. sample() is this with the lobe chosen with
 // probability F(wi.m); rough_dielectric_albedo.h integrates it over m.
 template <typename Distribution>
-std::optional<BsdfSample> scatterRoughDielectric(const Distribution& distribution, double eta, const Vec3d& wi,
-                                                 const Vec3d& m, bool transmission, TransportMode mode) {
+std::optional<BsdfSample> scatterRoughDielectric(const Distribution& distribution, double eta,
+                                                 const Vec3d& wi, const Vec3d& m, bool transmission,
+                                                 TransportMode mode) {
   Vec3d wo;
   if (transmission) {
     const std::optional<Refraction> t = refract(wi, m, eta);
@@ -136,8 +139,8 @@ std::optional<BsdfSample> scatterRoughDielectric(const Distribution& distributio
   // cancelled, so that it stays finite where D or cos_i is tiny: G2 / G1(wi) (Heitz & d'Eon
   // 2014), times 1 / etaRel^2 for radiance through a refraction.
   if (!transmission)
-    return BsdfSample{wo, Rgb(distribution.G2(wi, wo) / distribution.G1(wi)), density, LobeFlags::GlossyReflection,
-                      1.0};
+    return BsdfSample{wo, Rgb(distribution.G2(wi, wo) / distribution.G1(wi)), density,
+                      LobeFlags::GlossyReflection, 1.0};
   double weight = smithG2Transmission(distribution, wi, wo) / distribution.G1(wi);
   if (mode == TransportMode::Radiance) weight /= sqr(pair.etaRel);
   return BsdfSample{wo, Rgb(weight), density, LobeFlags::GlossyTransmission, pair.etaRel};
@@ -154,8 +157,10 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
       : distribution_(distribution), eta_(eta) {
     if (multipleScattering == MultipleScattering::KullaConty) {
       if (!distribution.isotropic())
-        throw std::invalid_argument("the rough dielectric's multiple-scattering compensation needs isotropic roughness");
-      compensation_ = RoughDielectricCompensation::shared(microfacetTypeOf<Distribution>(), distribution.alphaX(), eta);
+        throw std::invalid_argument(
+            "the rough dielectric's multiple-scattering compensation needs isotropic roughness");
+      compensation_ =
+          RoughDielectricCompensation::shared(microfacetTypeOf<Distribution>(), distribution.alphaX(), eta);
     }
   }
 
@@ -199,10 +204,12 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
  private:
   // eval() and pdf() with compensation, given E_s(wi) (a table lookup, done once per sample).
   double compensatedEval(const Vec3d& wi, const Vec3d& wo, double lossI, TransportMode mode) const {
-    return roughDielectricEval<double>(distribution_, eta_, wi, wo, mode) + compensation_->eval(wi, wo, lossI, mode);
+    return roughDielectricEval<double>(distribution_, eta_, wi, wo, mode) +
+           compensation_->eval(wi, wo, lossI, mode);
   }
   double compensatedPdf(const Vec3d& wi, const Vec3d& wo, double albedoI) const {
-    return albedoI * roughDielectricPdf(distribution_, eta_, wi, wo) + (1.0 - albedoI) * compensation_->pdf(wi, wo);
+    return albedoI * roughDielectricPdf(distribution_, eta_, wi, wo) +
+           (1.0 - albedoI) * compensation_->pdf(wi, wo);
   }
 
   // Single scattering with probability E_s(wi), its lobe then chosen by Fresnel with uLobe
@@ -225,8 +232,9 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
     if (!(density > 0)) return std::nullopt;
     const bool transmitted = wo->z * wi.z < 0;
     const double weight = compensatedEval(wi, *wo, 1.0 - albedoI, mode) * std::abs(wo->z) / density;
-    const LobeFlags lobe = single ? (transmitted ? LobeFlags::GlossyTransmission : LobeFlags::GlossyReflection)
-                                  : (transmitted ? LobeFlags::DiffuseTransmission : LobeFlags::DiffuseReflection);
+    const LobeFlags lobe =
+        single ? (transmitted ? LobeFlags::GlossyTransmission : LobeFlags::GlossyReflection)
+               : (transmitted ? LobeFlags::DiffuseTransmission : LobeFlags::DiffuseReflection);
     return BsdfSample{*wo, Rgb(weight), density, lobe, transmitted ? relativeIndex(wi, *wo, eta_) : 1.0};
   }
 
@@ -238,7 +246,8 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
 // The rough dielectric for the registry. alphaX and alphaY must be positive and finite, eta
 // positive, finite and != 1, and with compensation alphaX == alphaY <= 1 (std::invalid_argument
 // otherwise; the registry reports the allowed range to the user).
-std::unique_ptr<BsdfModel> makeRoughDielectric(MicrofacetType type, double alphaX, double alphaY, double eta,
-                                               MultipleScattering multipleScattering = MultipleScattering::None);
+std::unique_ptr<BsdfModel> makeRoughDielectric(
+    MicrofacetType type, double alphaX, double alphaY, double eta,
+    MultipleScattering multipleScattering = MultipleScattering::None);
 
 }  // namespace scatterlab

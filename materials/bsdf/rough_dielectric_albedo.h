@@ -55,13 +55,14 @@ struct LobeAlbedo {
 namespace detail {
 // (F w_R, (1 - F) w_T) at the microfacet normal m: what each lobe returns of the light that
 // the facet m receives from wi.
-template <typename Distribution>
-glm::dvec2 roughDielectricLobeWeights(const Distribution& distribution, double eta, const Vec3d& wi, const Vec3d& m,
-                                      TransportMode mode) {
+template <typename Distribution> glm::dvec2 roughDielectricLobeWeights(const Distribution& distribution,
+                                                                       double eta, const Vec3d& wi,
+                                                                       const Vec3d& m, TransportMode mode) {
   const double fresnel = fresnelDielectric(glm::dot(wi, m), eta);
   glm::dvec2 weights(0.0);
   if (fresnel > 0)
-    if (const auto s = scatterRoughDielectric(distribution, eta, wi, m, false, mode)) weights.x = fresnel * s->weight.x;
+    if (const auto s = scatterRoughDielectric(distribution, eta, wi, m, false, mode))
+      weights.x = fresnel * s->weight.x;
   if (fresnel < 1)
     if (const auto s = scatterRoughDielectric(distribution, eta, wi, m, true, mode))
       weights.y = (1.0 - fresnel) * s->weight.x;
@@ -99,12 +100,12 @@ inline QuadratureOptions albedoQuadrature() {
 // each hemisphere per unit power arriving from wi); radiance scales the transmitted part by
 // 1 / etaRel^2 and is not an energy.
 template <typename Distribution>
-LobeAlbedo roughDielectricAlbedo(const Distribution& distribution, double eta, const Vec3d& wi, TransportMode mode,
-                                 const QuadratureOptions& options = albedoQuadrature()) {
+LobeAlbedo roughDielectricAlbedo(const Distribution& distribution, double eta, const Vec3d& wi,
+                                 TransportMode mode, const QuadratureOptions& options = albedoQuadrature()) {
   if (wi.z == 0 || !std::isfinite(wi.z)) return {};
   const auto integrand = [&](double u0, double u1) {
-    return detail::roughDielectricLobeWeights(distribution, eta, wi,
-                                              sampleRoughDielectricNormal(distribution, wi, Vec2d(u0, u1)), mode);
+    return detail::roughDielectricLobeWeights(
+        distribution, eta, wi, sampleRoughDielectricNormal(distribution, wi, Vec2d(u0, u1)), mode);
   };
   // u0 = 1 is the rim of the visible normals' disk, normals on the horizon, where the
   // weights drop to 0 at the end point itself: Simpson's rule would refine the last piece to
@@ -119,13 +120,14 @@ LobeAlbedo roughDielectricAlbedo(const Distribution& distribution, double eta, c
 // from outside (inside = false) or from inside: the fixed-rule quadrature of the header
 // comment. Nothing for mu outside (0, 1].
 template <typename Distribution>
-LobeAlbedo roughDielectricAlbedoAboutIncidence(const Distribution& distribution, double eta, double mu, bool inside) {
+LobeAlbedo roughDielectricAlbedoAboutIncidence(const Distribution& distribution, double eta, double mu,
+                                               bool inside) {
   if (!(mu > 0) || !(mu <= 1)) return {};
   const double sinTheta = safeSqrt(1.0 - mu * mu);
   const Vec3d facing(sinTheta, 0.0, mu);  // w'
   const Vec3d wi = inside ? -facing : facing;
   const Vec3d towardNormal(-mu, 0.0, sinTheta), across(0.0, 1.0, 0.0);  // e1, e2
-  const double etaRel = inside ? 1.0 / eta : eta;  // n(other side) / n(wi's side)
+  const double etaRel = inside ? 1.0 / eta : eta;                       // n(other side) / n(wi's side)
   const bool critical = etaRel < 1.0;
   const double gammaCritical = critical ? std::asin(etaRel) : PiOver2;  // cos = sqrt(1 - etaRel^2)
   const double alpha = distribution.alphaX();
@@ -180,7 +182,8 @@ LobeAlbedo roughDielectricAlbedoAboutIncidence(const Distribution& distribution,
       if (!(m.z > 0)) return glm::dvec2(0.0);
       const double density = std::sin(g) * distribution.pdfVisible(facing, m);
       if (!(density > 0)) return glm::dvec2(0.0);
-      return density * detail::roughDielectricLobeWeights(distribution, eta, wi, m, TransportMode::Importance);
+      return density *
+             detail::roughDielectricLobeWeights(distribution, eta, wi, m, TransportMode::Importance);
     };
     glm::dvec2 sum(0.0);
     for (size_t k = 0; k + 1 < breaks.size(); ++k)

@@ -24,16 +24,17 @@ void checkParameters(double alpha, double eta) {
     throw std::invalid_argument("the rough dielectric's albedo is tabulated for roughness in (0, 1], got " +
                                 std::to_string(alpha));
   if (!(eta > 0.0) || !std::isfinite(eta) || eta == 1.0)
-    throw std::invalid_argument("rough dielectric index must be positive, finite and not 1, got " + std::to_string(eta));
+    throw std::invalid_argument("rough dielectric index must be positive, finite and not 1, got " +
+                                std::to_string(eta));
 }
 
 }  // namespace
 
 double dielectricAlbedo(MicrofacetType type, double alpha, double eta, double mu, bool inside) {
-  const LobeAlbedo e = type == MicrofacetType::Ggx
-                           ? roughDielectricAlbedoAboutIncidence(GgxDistribution<double>(alpha, alpha), eta, mu, inside)
-                           : roughDielectricAlbedoAboutIncidence(BeckmannDistribution<double>(alpha, alpha), eta, mu,
-                                                                 inside);
+  const LobeAlbedo e =
+      type == MicrofacetType::Ggx
+          ? roughDielectricAlbedoAboutIncidence(GgxDistribution<double>(alpha, alpha), eta, mu, inside)
+          : roughDielectricAlbedoAboutIncidence(BeckmannDistribution<double>(alpha, alpha), eta, mu, inside);
   return e.total();
 }
 
@@ -56,7 +57,9 @@ double DielectricAlbedoTable::cosAt(double s) {
 
 DielectricAlbedoTable::DielectricAlbedoTable(MicrofacetType type, double alpha, double eta, bool inside) {
   checkParameters(alpha, eta);
-  const auto albedoAt = [&](double mu) { return dielectricAlbedo(type, alpha, eta, std::max(mu, GrazingCos), inside); };
+  const auto albedoAt = [&](double mu) {
+    return dielectricAlbedo(type, alpha, eta, std::max(mu, GrazingCos), inside);
+  };
   const double s0 = coordinate(0.0), s1 = coordinate(1.0);
   // Nodes (s, E) kept sorted by s; `pending` are the intervals [s_k, s_{k+1}] still to check,
   // by their left end. Each round computes the midpoints of all pending intervals against the
@@ -74,7 +77,8 @@ DielectricAlbedoTable::DielectricAlbedoTable(MicrofacetType type, double alpha, 
   for (const double k : {0.25, 0.5, 1.0, 2.0, 4.0}) features.push_back(k * alpha);
   if (inside) {
     const double critical = std::sqrt(1.0 - 1.0 / (eta * eta)), width = alpha / eta;
-    for (const double k : {-4.0, -2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0, 4.0}) features.push_back(critical + k * width);
+    for (const double k : {-4.0, -2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0, 4.0})
+      features.push_back(critical + k * width);
   }
   for (const double mu : features)
     if (mu > RefinedAbove && mu < 1.0) nodes.emplace(coordinate(mu), albedoAt(mu));
@@ -87,7 +91,8 @@ DielectricAlbedoTable::DielectricAlbedoTable(MicrofacetType type, double alpha, 
     return PiecewiseCubic1D(std::move(x), std::move(y));
   };
   std::vector<std::pair<double, double>> pending;
-  for (auto it = nodes.begin(); std::next(it) != nodes.end(); ++it) pending.emplace_back(it->first, std::next(it)->first);
+  for (auto it = nodes.begin(); std::next(it) != nodes.end(); ++it)
+    pending.emplace_back(it->first, std::next(it)->first);
   while (!pending.empty() && nodes.size() < size_t(MaxNodes)) {
     const PiecewiseCubic1D current = interpolant();
     std::vector<std::pair<double, double>> next;
@@ -118,7 +123,9 @@ DielectricAlbedoTable::DielectricAlbedoTable(MicrofacetType type, double alpha, 
   averageLoss_ = 2.0 * sum;
 }
 
-double DielectricAlbedoTable::operator()(double mu) const { return std::clamp(table_(coordinate(mu)), 0.0, 1.0); }
+double DielectricAlbedoTable::operator()(double mu) const {
+  return std::clamp(table_(coordinate(mu)), 0.0, 1.0);
+}
 
 // ---- The compensation lobe ----
 
@@ -139,18 +146,23 @@ RoughDielectricCompensation::RoughDielectricCompensation(MicrofacetType type, do
   const double crossing = std::min(lossOut, eta * eta * lossIn);
   if (lossOut > 0) reflectionOutside_ = std::clamp(1.0 - crossing / lossOut, 0.0, 1.0);
   if (lossIn > 0) reflectionInside_ = std::clamp(1.0 - crossing / (eta * eta * lossIn), 0.0, 1.0);
-  outsideSampler_ = LossLobeSampler([this](const Vec3d& w) { return outside_.loss(w.z); }, lossOut, alpha, alpha);
-  insideSampler_ = LossLobeSampler([this](const Vec3d& w) { return inside_.loss(w.z); }, lossIn, alpha, alpha);
+  outsideSampler_ =
+      LossLobeSampler([this](const Vec3d& w) { return outside_.loss(w.z); }, lossOut, alpha, alpha);
+  insideSampler_ =
+      LossLobeSampler([this](const Vec3d& w) { return inside_.loss(w.z); }, lossIn, alpha, alpha);
 }
 
 std::shared_ptr<const RoughDielectricCompensation> RoughDielectricCompensation::shared(MicrofacetType type,
-                                                                                       double alpha, double eta) {
-  static SharedCache<std::tuple<MicrofacetType, double, double>, RoughDielectricCompensation> cache(MaxCacheEntries);
+                                                                                       double alpha,
+                                                                                       double eta) {
+  static SharedCache<std::tuple<MicrofacetType, double, double>, RoughDielectricCompensation> cache(
+      MaxCacheEntries);
   return cache.get({type, alpha, eta},
                    [&] { return std::make_shared<const RoughDielectricCompensation>(type, alpha, eta); });
 }
 
-double RoughDielectricCompensation::eval(const Vec3d& wi, const Vec3d& wo, double lossI, TransportMode mode) const {
+double RoughDielectricCompensation::eval(const Vec3d& wi, const Vec3d& wo, double lossI,
+                                         TransportMode mode) const {
   if (wi.z == 0 || wo.z == 0) return 0.0;
   const bool inside = wi.z < 0;
   if (wi.z * wo.z > 0) {
@@ -158,18 +170,20 @@ double RoughDielectricCompensation::eval(const Vec3d& wi, const Vec3d& wo, doubl
     return reflectionShare(inside) * kullaContyLobe(lossI, side.loss(std::abs(wo.z)), side.averageLoss());
   }
   const DielectricAlbedoTable& other = albedo(!inside);
-  const double f = (1.0 - reflectionShare(inside)) * kullaContyLobe(lossI, other.loss(std::abs(wo.z)), other.averageLoss());
+  const double f = (1.0 - reflectionShare(inside)) *
+                   kullaContyLobe(lossI, other.loss(std::abs(wo.z)), other.averageLoss());
   return mode == TransportMode::Radiance ? f / sqr(relativeIndex(wi, wo, eta_)) : f;
 }
 
 double RoughDielectricCompensation::pdf(const Vec3d& wi, const Vec3d& wo) const {
   if (wi.z == 0 || wo.z == 0) return 0.0;
-  const bool inside = wi.z < 0, reflection = wi.z * wo.z > 0;
+  const bool inside = wi.z<0, reflection = wi.z * wo.z> 0;
   const double share = reflection ? reflectionShare(inside) : 1.0 - reflectionShare(inside);
   return share * sampler(wo.z < 0).pdf(upward(wo));
 }
 
-std::optional<Vec3d> RoughDielectricCompensation::sample(const Vec3d& wi, double uLobe, const Vec2d& u) const {
+std::optional<Vec3d> RoughDielectricCompensation::sample(const Vec3d& wi, double uLobe,
+                                                         const Vec2d& u) const {
   if (wi.z == 0) return std::nullopt;
   const bool inside = wi.z < 0, reflection = uLobe < reflectionShare(inside);
   const bool below = reflection ? inside : !inside;

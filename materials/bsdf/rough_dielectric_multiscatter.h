@@ -96,9 +96,9 @@ class DielectricAlbedoTable {
   static double coordinate(double mu);
   static double cosAt(double s);
 
-  static constexpr double Tolerance = 1e-4;        // interpolant against quadrature at midpoints
-  static constexpr double RefinedAbove = 1e-5;     // intervals are split only above this mu
-  static constexpr double GrazingCos = 1e-9;       // where the mu = 0 node is computed
+  static constexpr double Tolerance = 1e-4;     // interpolant against quadrature at midpoints
+  static constexpr double RefinedAbove = 1e-5;  // intervals are split only above this mu
+  static constexpr double GrazingCos = 1e-9;    // where the mu = 0 node is computed
   static constexpr int InitialNodes = 25;
   static constexpr int MaxNodes = 400;
 
@@ -115,7 +115,8 @@ double dielectricAlbedo(MicrofacetType type, double alpha, double eta, double mu
 // and the samplers. Immutable and shared.
 class RoughDielectricCompensation {
  public:
-  static std::shared_ptr<const RoughDielectricCompensation> shared(MicrofacetType type, double alpha, double eta);
+  static std::shared_ptr<const RoughDielectricCompensation> shared(MicrofacetType type, double alpha,
+                                                                   double eta);
   RoughDielectricCompensation(MicrofacetType type, double alpha, double eta);
 
   double eta() const { return eta_; }

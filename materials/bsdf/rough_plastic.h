@@ -77,9 +77,8 @@ T microfacetDielectricReflectionEval(const Distribution& distribution, const T& 
 }
 
 // f_d given the coating's albedos E(wi), E(wo) and Ebar (header comment), per channel.
-template <typename T>
-RgbT<T> roughPlasticDiffuseEval(const RgbT<T>& kd, const T& eta, const T& albedoIn, const T& albedoOut,
-                                const T& albedoAverage) {
+template <typename T> RgbT<T> roughPlasticDiffuseEval(const RgbT<T>& kd, const T& eta, const T& albedoIn,
+                                                      const T& albedoOut, const T& albedoAverage) {
   const RgbT<T> one(T(1));
   const RgbT<T> denominator = (eta * eta) * (one - kd) + kd * (T(1) - albedoAverage);
   return kd * ((T(1) - albedoIn) * (T(1) - albedoOut) * T(InvPi)) / denominator;
@@ -90,7 +89,10 @@ template <typename Distribution> class RoughPlasticBsdf final : public BsdfModel
   // distribution: isotropic; kd in [0, 1]; eta >= 1 (std::invalid_argument otherwise, from
   // the albedo table).
   RoughPlasticBsdf(const Distribution& distribution, const Rgb& kd, double eta)
-      : distribution_(distribution), kd_(kd), eta_(eta), albedo_(sharedDielectricReflectionAlbedo(distribution, eta)) {
+      : distribution_(distribution),
+        kd_(kd),
+        eta_(eta),
+        albedo_(sharedDielectricReflectionAlbedo(distribution, eta)) {
     const double average = albedo_->hemisphericalAverage();
     const Rgb escape = kd * (1.0 - average) / ((eta * eta) * (Rgb(1.0) - kd) + kd * (1.0 - average));
     meanDiffuseAlbedo_ = (escape.x + escape.y + escape.z) / 3.0;
@@ -112,7 +114,8 @@ template <typename Distribution> class RoughPlasticBsdf final : public BsdfModel
     const double albedoIn = incidentAlbedo(wi);
     const double specular = specularProbability(albedoIn);
     const bool chooseSpecular = uLobe < specular;
-    const Vec3d wo = chooseSpecular ? reflect(wi, distribution_.sampleVisible(wi, u)) : sampleCosineHemisphere(u);
+    const Vec3d wo =
+        chooseSpecular ? reflect(wi, distribution_.sampleVisible(wi, u)) : sampleCosineHemisphere(u);
     if (!(wo.z > 0)) return std::nullopt;
     // The mixture's density and value, exactly as pdf() and eval() compute them.
     const double density = pdfGiven(specular, wi, wo);
@@ -159,7 +162,7 @@ template <typename Distribution> class RoughPlasticBsdf final : public BsdfModel
   Rgb evalGiven(double albedoIn, const Vec3d& wi, const Vec3d& wo) const {
     const double specular = microfacetDielectricReflectionEval<double>(distribution_, eta_, wi, wo);
     return Rgb(specular) + roughPlasticDiffuseEval<double>(kd_, eta_, albedoIn, (*albedo_)(wo),
-                                                            albedo_->hemisphericalAverage());
+                                                           albedo_->hemisphericalAverage());
   }
 
   double pdfGiven(double specular, const Vec3d& wi, const Vec3d& wo) const {

@@ -14,8 +14,12 @@ class SmoothConductorBsdf final : public BsdfModel {
  public:
   SmoothConductorBsdf(const Rgb& eta, const Rgb& k) : eta_(eta), k_(k) {}
 
-  Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override { return Rgb(0.0); }
-  double pdf(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override { return 0.0; }
+  Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
+    return Rgb(0.0);
+  }
+  double pdf(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
+    return 0.0;
+  }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double, const Vec2d&,
                                    TransportMode = TransportMode::Radiance) const override {

@@ -28,15 +28,20 @@ class SmoothDielectricBsdf final : public BsdfModel {
   // invisible interface: R = 0 and every sample passes straight through with weight 1.
   explicit SmoothDielectricBsdf(double eta) : eta_(eta) {}
 
-  Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override { return Rgb(0.0); }
-  double pdf(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override { return 0.0; }
+  Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
+    return Rgb(0.0);
+  }
+  double pdf(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
+    return 0.0;
+  }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d&,
                                    TransportMode mode = TransportMode::Radiance) const override {
     if (wi.z == 0 || !std::isfinite(wi.z)) return std::nullopt;
     const double r = reflectance(wi.z);
     // uLobe < 1 always, so r = 1 (total internal reflection) always reflects.
-    if (uLobe < r) return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), r, LobeFlags::SpecularReflection, 1.0};
+    if (uLobe < r)
+      return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), r, LobeFlags::SpecularReflection, 1.0};
     const std::optional<Refraction> t = refract(wi, Vec3d(0, 0, 1), eta_);
     // Refraction fails only under total internal reflection, where r = 1; a rounding
     // disagreement between the two tests there loses a sample instead of producing one.

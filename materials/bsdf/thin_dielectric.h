@@ -22,14 +22,19 @@ class ThinDielectricBsdf final : public BsdfModel {
   // eta: the sheet's index relative to the surrounding medium (> 0).
   explicit ThinDielectricBsdf(double eta) : eta_(eta) {}
 
-  Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override { return Rgb(0.0); }
-  double pdf(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override { return 0.0; }
+  Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
+    return Rgb(0.0);
+  }
+  double pdf(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
+    return 0.0;
+  }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d&,
                                    TransportMode = TransportMode::Radiance) const override {
     if (wi.z == 0 || !std::isfinite(wi.z)) return std::nullopt;
     const double r = reflectance(wi.z);
-    if (uLobe < r) return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), r, LobeFlags::SpecularReflection, 1.0};
+    if (uLobe < r)
+      return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), r, LobeFlags::SpecularReflection, 1.0};
     return BsdfSample{-wi, Rgb(1.0), 1.0 - r, LobeFlags::SpecularTransmission, 1.0};
   }
 

@@ -14,11 +14,13 @@ const std::array<double, WhiteAlbedoGrid::NodeCount>& whiteAlbedoTable(Microface
   return type == MicrofacetType::Ggx ? GgxWhiteAlbedoTable : BeckmannWhiteAlbedoTable;
 }
 
-double computeWhiteAlbedoNode(MicrofacetType type, int alphaIndex, int cosIndex, const QuadratureOptions& options) {
+double computeWhiteAlbedoNode(MicrofacetType type, int alphaIndex, int cosIndex,
+                              const QuadratureOptions& options) {
   const double alpha = WhiteAlbedoGrid::alphaNode(alphaIndex);
   const double mu = WhiteAlbedoGrid::cosAt(WhiteAlbedoGrid::cosNodeCoordinate(cosIndex), alpha);
   const Vec3d wi(safeSqrt(1.0 - mu * mu), 0.0, mu);
-  if (type == MicrofacetType::Ggx) return whiteMicrofacetAlbedo(GgxDistribution<double>(alpha, alpha), wi, options);
+  if (type == MicrofacetType::Ggx)
+    return whiteMicrofacetAlbedo(GgxDistribution<double>(alpha, alpha), wi, options);
   return whiteMicrofacetAlbedo(BeckmannDistribution<double>(alpha, alpha), wi, options);
 }
 
@@ -32,7 +34,8 @@ std::vector<double> isotropicRow(MicrofacetType type, double alpha) {
                                     std::vector<double>(nodes.begin(), nodes.end()));
   const double s = WhiteAlbedoGrid::alphaCoordinate(alpha);
   std::vector<double> row(WhiteAlbedoGrid::CosNodes);
-  for (int j = 0; j < WhiteAlbedoGrid::CosNodes; ++j) row[j] = committed(s, WhiteAlbedoGrid::cosNodeCoordinate(j));
+  for (int j = 0; j < WhiteAlbedoGrid::CosNodes; ++j)
+    row[j] = committed(s, WhiteAlbedoGrid::cosNodeCoordinate(j));
   return row;
 }
 
@@ -50,7 +53,8 @@ std::vector<double> anisotropicNodes(const Distribution& distribution, int azimu
     for (int j = 0; j < WhiteAlbedoGrid::CosNodes; ++j) {
       const double mu = WhiteAlbedoGrid::cosAt(WhiteAlbedoGrid::cosNodeCoordinate(j), a);
       const double sinTheta = safeSqrt(1.0 - mu * mu);
-      values.push_back(whiteMicrofacetAlbedoFixed(distribution, Vec3d(sinTheta * cosPhi, sinTheta * sinPhi, mu)));
+      values.push_back(
+          whiteMicrofacetAlbedoFixed(distribution, Vec3d(sinTheta * cosPhi, sinTheta * sinPhi, mu)));
     }
   }
   return values;
@@ -74,8 +78,9 @@ WhiteMicrofacetAlbedo::WhiteMicrofacetAlbedo(MicrofacetType type, double alphaX,
     : type_(type), alphaX_(alphaX), alphaY_(alphaY) {
   for (const double alpha : {alphaX, alphaY})
     if (!(alpha > 0.0 && alpha <= WhiteAlbedoGrid::AlphaMax))
-      throw std::invalid_argument("the multiple-scattering albedo is tabulated for roughness in (0, 1], got " +
-                                  std::to_string(alpha));
+      throw std::invalid_argument(
+          "the multiple-scattering albedo is tabulated for roughness in (0, 1], got " +
+          std::to_string(alpha));
   if (alphaX == alphaY) {
     table_ = CatmullRomTable2D(1, WhiteAlbedoGrid::CosNodes, isotropicRow(type, alphaX));
   } else {
@@ -86,7 +91,8 @@ WhiteMicrofacetAlbedo::WhiteMicrofacetAlbedo(MicrofacetType type, double alphaX,
     std::vector<double> values =
         type == MicrofacetType::Ggx
             ? anisotropicNodes(GgxDistribution<double>(alphaX, alphaY), AnisotropicAzimuthNodes, projected)
-            : anisotropicNodes(BeckmannDistribution<double>(alphaX, alphaY), AnisotropicAzimuthNodes, projected);
+            : anisotropicNodes(BeckmannDistribution<double>(alphaX, alphaY), AnisotropicAzimuthNodes,
+                               projected);
     table_ = CatmullRomTable2D(AnisotropicAzimuthNodes, WhiteAlbedoGrid::CosNodes, std::move(values));
   }
   averageLoss_ = integrateAverageLoss();
@@ -94,7 +100,8 @@ WhiteMicrofacetAlbedo::WhiteMicrofacetAlbedo(MicrofacetType type, double alphaX,
 
 std::shared_ptr<const WhiteMicrofacetAlbedo> WhiteMicrofacetAlbedo::shared(MicrofacetType type, double alphaX,
                                                                            double alphaY) {
-  static SharedCache<std::tuple<MicrofacetType, double, double>, WhiteMicrofacetAlbedo> cache(MaxCacheEntries);
+  static SharedCache<std::tuple<MicrofacetType, double, double>, WhiteMicrofacetAlbedo> cache(
+      MaxCacheEntries);
   return cache.get({type, alphaX, alphaY},
                    [&] { return std::make_shared<const WhiteMicrofacetAlbedo>(type, alphaX, alphaY); });
 }
@@ -149,16 +156,19 @@ double WhiteMicrofacetAlbedo::integrateAverageLoss() const {
   };
   std::vector<double> breaks;
   for (int k = 0; k < table_.rows(); ++k) {
-    const double r = std::sqrt(alphaX_) + double(k) / (table_.rows() - 1) * (std::sqrt(alphaY_) - std::sqrt(alphaX_));
+    const double r =
+        std::sqrt(alphaX_) + double(k) / (table_.rows() - 1) * (std::sqrt(alphaY_) - std::sqrt(alphaX_));
     const double a = r * r;
-    const double cos2Phi = std::clamp((alphaY_ * alphaY_ - a * a) / (alphaY_ * alphaY_ - alphaX_ * alphaX_), 0.0, 1.0);
+    const double cos2Phi =
+        std::clamp((alphaY_ * alphaY_ - a * a) / (alphaY_ * alphaY_ - alphaX_ * alphaX_), 0.0, 1.0);
     breaks.push_back(std::acos(std::sqrt(cos2Phi)));
   }
   breaks.front() = 0.0;
   breaks.back() = PiOver2;
   const QuadratureOptions options = averageQuadrature(1e-9);
   double sum = 0.0;
-  for (size_t k = 0; k + 1 < breaks.size(); ++k) sum += adaptiveSimpson(atAzimuth, breaks[k], breaks[k + 1], options);
+  for (size_t k = 0; k + 1 < breaks.size(); ++k)
+    sum += adaptiveSimpson(atAzimuth, breaks[k], breaks[k + 1], options);
   return (2.0 / Pi) * sum;
 }
 

@@ -121,8 +121,8 @@ double whiteMicrofacetAlbedo(const Distribution& distribution, const Vec3d& wi,
                              const QuadratureOptions& options = whiteAlbedoQuadrature()) {
   if (!(wi.z > 0)) return 1.0;
   return adaptiveSimpson2D(
-      [&](double u1, double v) { return detail::whiteAlbedoIntegrand(distribution, wi, u1, v); }, 0.0, 1.0, 0.0,
-      1.0, options);
+      [&](double u1, double v) { return detail::whiteAlbedoIntegrand(distribution, wi, u1, v); }, 0.0, 1.0,
+      0.0, 1.0, options);
 }
 
 // E(wi) by the fixed 32 x 32 rule (within 5e-4); at wi.z <= 0, 1.
@@ -154,8 +154,10 @@ class WhiteMicrofacetAlbedo {
   // alphaX, alphaY in (0, 1] (std::invalid_argument otherwise); roughness below the table's
   // 0.001 uses the 0.001 row in the coordinates of its own alpha, where E differs from 1 by
   // less than 1e-6 except within mu < 0.01 of grazing.
-  static std::shared_ptr<const WhiteMicrofacetAlbedo> shared(MicrofacetType type, double alphaX, double alphaY);
-  template <typename Distribution> static std::shared_ptr<const WhiteMicrofacetAlbedo> of(const Distribution& d) {
+  static std::shared_ptr<const WhiteMicrofacetAlbedo> shared(MicrofacetType type, double alphaX,
+                                                             double alphaY);
+  template <typename Distribution>
+  static std::shared_ptr<const WhiteMicrofacetAlbedo> of(const Distribution& d) {
     return shared(microfacetTypeOf<Distribution>(), d.alphaX(), d.alphaY());
   }
 

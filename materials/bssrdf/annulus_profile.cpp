@@ -18,7 +18,8 @@ std::vector<double> annulusMeans(const RadialProfile& profile, int channel, std:
   std::vector<double> means;
   for (size_t k = 0; k < areas.size(); ++k) {
     const double mass =
-        total > 0 ? total * (profile.radiusCdf(channel, edges[k + 1]) - profile.radiusCdf(channel, edges[k])) : 0.0;
+        total > 0 ? total * (profile.radiusCdf(channel, edges[k + 1]) - profile.radiusCdf(channel, edges[k]))
+                  : 0.0;
     means.push_back(mass / areas[k]);
   }
   return means;
@@ -38,7 +39,8 @@ double radialRelativeError(std::span<const double> edges, std::span<const double
 }
 
 std::vector<size_t> logAnnulusGroups(std::span<const double> edges, int groups) {
-  if (edges.size() < 3 || groups < 2) throw std::invalid_argument("logAnnulusGroups: need two annuli and two groups");
+  if (edges.size() < 3 || groups < 2)
+    throw std::invalid_argument("logAnnulusGroups: need two annuli and two groups");
   const double first = edges[1], last = edges.back();
   std::vector<size_t> out{0};
   for (int g = 0; g < groups; ++g) {

@@ -23,7 +23,8 @@ std::vector<double> annulusMeans(const RadialProfile& profile, int channel, std:
 // (`modelBeyond`, `referenceBeyond`) as one more bin. 0 for equal profiles; at most
 // (total model + total reference) / total reference.
 double radialRelativeError(std::span<const double> edges, std::span<const double> model,
-                           std::span<const double> reference, double modelBeyond = 0.0, double referenceBeyond = 0.0);
+                           std::span<const double> reference, double modelBeyond = 0.0,
+                           double referenceBeyond = 0.0);
 
 // Coarser annuli made of whole annuli of `edges`: the indices (into `edges`, first 0, last
 // edges.size() - 1) of the fine edges nearest to `groups` log-spaced radii from edges[1] to

@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <utility>
 
-
 #include "materials/bssrdf/photon_beam_diffusion.h"
 #include "materials/core/catmull_rom.h"
 #include "materials/core/gauss_legendre.h"
@@ -25,7 +24,8 @@ double profileDensity(double rho, double g, double eta, const FresnelBoundary& b
 
 BeamDiffusionTable::BeamDiffusionTable(double g, double eta) : g_(g), eta_(eta) {
   if (!(g > -1 && g < 1)) throw std::invalid_argument("beam diffusion table: g must be in (-1, 1)");
-  if (!(eta > 0) || !std::isfinite(eta)) throw std::invalid_argument("beam diffusion table: eta must be positive");
+  if (!(eta > 0) || !std::isfinite(eta))
+    throw std::invalid_argument("beam diffusion table: eta must be positive");
   for (int i = 0; i < AlbedoCount; ++i)
     albedos_[i] = (1.0 - std::exp(-8.0 * i / (AlbedoCount - 1))) / (1.0 - std::exp(-8.0));
   radii_[0] = 0.0;
@@ -48,7 +48,8 @@ BeamDiffusionTable::BeamDiffusionTable(double g, double eta) : g_(g), eta_(eta) 
     for (int j = 1; j < RadiusCount; ++j) {
       const double lo = radii_[j - 1], width = radii_[j] - lo;
       double mass = 0.0;
-      for (int k = 0; k < 6; ++k) mass += rule.weights[k] * profileDensity(rho, g, eta, boundary, lo + rule.nodes[k] * width);
+      for (int k = 0; k < 6; ++k)
+        mass += rule.weights[k] * profileDensity(rho, g, eta, boundary, lo + rule.nodes[k] * width);
       P[j] = P[j - 1] + mass * width;
       f[j] = profileDensity(rho, g, eta, boundary, radii_[j]);
     }

@@ -34,8 +34,8 @@ BetterDipole<T> makeBetterDipole(const T& sigmaSPrime, const T& sigmaA, const Fr
   const T sigmaTPrime = sigmaA + sigmaSPrime;
   const T D = (T(2) * sigmaA + sigmaSPrime) / (T(3) * sigmaTPrime * sigmaTPrime);
   const T zr = T(1) / sigmaTPrime;
-  return {sigmaSPrime / sigmaTPrime, safeSqrt(sigmaA / D), D, zr, -zr - T(4 * boundary.A) * D, boundary.cPhi,
-          boundary.cE};
+  return {sigmaSPrime / sigmaTPrime,   safeSqrt(sigmaA / D), D,          zr,
+          -zr - T(4 * boundary.A) * D, boundary.cPhi,        boundary.cE};
 }
 
 template <typename T> T betterDipoleProfile(const BetterDipole<T>& d, const T& r) {
@@ -55,7 +55,8 @@ template <typename T> T betterDipoleTotal(const BetterDipole<T>& d) {
   using std::exp;
   const T real = exp(-d.sigmaTr * d.zr), virtualSource = exp(-d.sigmaTr * abs(d.zv));
   return T(0.5) * d.alphaPrime * d.alphaPrime *
-         (T(d.cE) * (real + virtualSource) + (T(d.cPhi) / d.D) * real * oneMinusExpOver(d.sigmaTr, abs(d.zv) - d.zr));
+         (T(d.cE) * (real + virtualSource) +
+          (T(d.cPhi) / d.D) * real * oneMinusExpOver(d.sigmaTr, abs(d.zv) - d.zr));
 }
 
 class BetterDipoleProfile final : public CumulativeProfile {

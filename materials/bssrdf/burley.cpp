@@ -37,6 +37,8 @@ double BurleyProfile::radiusPdf(int channel, double r) const {
   return r >= 0 ? burleyRadiusPdf(shape_[channel], r) : 0.0;
 }
 
-double BurleyProfile::sampleRadius(int channel, double u) const { return burleySampleRadius(shape_[channel], u); }
+double BurleyProfile::sampleRadius(int channel, double u) const {
+  return burleySampleRadius(shape_[channel], u);
+}
 
 }  // namespace scatterlab

@@ -13,9 +13,10 @@ namespace scatterlab {
 
 // Which Monte Carlo configuration s(A) was fitted to, and what the length l in d = l / s is.
 enum class BurleyFit {
-  Searchlight,          // normal incidence, l = mean free path 1 / sigma_t':   s = 1.85 - A + 7 |A - 0.8|^3
-  DiffuseTransmission,  // diffuse surface transmission, l = mean free path:    s = 1.9 - A + 3.5 (A - 0.8)^2
-  SearchlightDiffuseMfp // normal incidence, l = diffuse mean free path 1 / sigma_tr: s = 3.5 + 100 (A - 0.33)^4
+  Searchlight,           // normal incidence, l = mean free path 1 / sigma_t':   s = 1.85 - A + 7 |A - 0.8|^3
+  DiffuseTransmission,   // diffuse surface transmission, l = mean free path:    s = 1.9 - A + 3.5 (A - 0.8)^2
+  SearchlightDiffuseMfp  // normal incidence, l = diffuse mean free path 1 / sigma_tr: s = 3.5 + 100 (A -
+                         // 0.33)^4
 };
 
 template <typename T> T burleyShapeFactor(BurleyFit fit, const T& A) {
@@ -25,10 +26,8 @@ template <typename T> T burleyShapeFactor(BurleyFit fit, const T& A) {
       const T x = abs(A - T(0.8));
       return T(1.85) - A + T(7) * x * x * x;
     }
-    case BurleyFit::DiffuseTransmission:
-      return T(1.9) - A + T(3.5) * sqr(A - T(0.8));
-    case BurleyFit::SearchlightDiffuseMfp:
-      return T(3.5) + T(100) * sqr(sqr(A - T(0.33)));
+    case BurleyFit::DiffuseTransmission: return T(1.9) - A + T(3.5) * sqr(A - T(0.8));
+    case BurleyFit::SearchlightDiffuseMfp: return T(3.5) + T(100) * sqr(sqr(A - T(0.33)));
   }
   return T(1);
 }

@@ -10,7 +10,9 @@
 namespace scatterlab {
 
 namespace {
-const GaussLegendreRule<ChandrasekharH::NodeCount>& rule() { return gaussLegendre<ChandrasekharH::NodeCount>(); }
+const GaussLegendreRule<ChandrasekharH::NodeCount>& rule() {
+  return gaussLegendre<ChandrasekharH::NodeCount>();
+}
 constexpr int MaxIterations = 1'000'000;
 }  // namespace
 
@@ -34,7 +36,9 @@ ChandrasekharH::ChandrasekharH(double albedo) : albedo_(albedo) {
 }
 
 const std::array<double, ChandrasekharH::NodeCount>& ChandrasekharH::nodes() const { return rule().nodes; }
-const std::array<double, ChandrasekharH::NodeCount>& ChandrasekharH::weights() const { return rule().weights; }
+const std::array<double, ChandrasekharH::NodeCount>& ChandrasekharH::weights() const {
+  return rule().weights;
+}
 
 double ChandrasekharH::operator()(double mu) const {
   const auto& nodes = rule().nodes;
@@ -50,7 +54,9 @@ double ChandrasekharH::moment(int k) const {
   return sum;
 }
 
-double ChandrasekharH::directionalAlbedo(double mu0) const { return 1.0 - (*this)(mu0) * std::sqrt(1.0 - albedo_); }
+double ChandrasekharH::directionalAlbedo(double mu0) const {
+  return 1.0 - (*this)(mu0)*std::sqrt(1.0 - albedo_);
+}
 
 double ChandrasekharH::whiteSkyAlbedo() const { return 1.0 - 2.0 * std::sqrt(1.0 - albedo_) * moment(1); }
 
@@ -61,8 +67,8 @@ double ChandrasekharH::brdf(double muI, double muO) const {
 double searchlightAlbedoForReflectance(double reflectance) {
   if (!(reflectance >= 0 && reflectance < 1))
     throw std::invalid_argument("searchlight albedo: the reflectance must be in [0, 1)");
-  return bisectIncreasing([](double c) { return ChandrasekharH(c).directionalAlbedo(1.0); }, reflectance, 0.0, 1.0,
-                          1e-12);
+  return bisectIncreasing([](double c) { return ChandrasekharH(c).directionalAlbedo(1.0); }, reflectance, 0.0,
+                          1.0, 1e-12);
 }
 
 }  // namespace scatterlab

@@ -25,8 +25,8 @@ class ChandrasekharH {
 
   double albedo() const { return albedo_; }
   int iterations() const { return iterations_; }
-  const std::array<double, NodeCount>& nodes() const;    // on [0, 1]
-  const std::array<double, NodeCount>& weights() const;  // sum to 1
+  const std::array<double, NodeCount>& nodes() const;                      // on [0, 1]
+  const std::array<double, NodeCount>& weights() const;                    // sum to 1
   const std::array<double, NodeCount>& values() const { return values_; }  // H at the nodes
 
   double operator()(double mu) const;

@@ -43,7 +43,8 @@ double CumulativeProfile::sampleRadius(int channel, double u) const {
   if (!(target > 0)) return 0.0;
   const std::vector<double>& radii = radii_[channel];
   const std::vector<double>& cumulative = cumulative_[channel];
-  const size_t k = size_t(std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
+  const size_t k =
+      size_t(std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
   double lo = k == 0 ? 0.0 : radii[k - 1], hi;
   double pLo = k == 0 ? 0.0 : cumulative[k - 1], pHi;
   if (k < radii.size()) {

@@ -2,8 +2,8 @@
 // below the surface point's normal (z < 0: a virtual source above the surface), observed at
 // radius r on the surface, d = sqrt(r^2 + z^2), sigma = sigma_tr, and their integrals over the
 // disk of radius r (Farrell, Patterson & Wilson 1992; Jensen et al. 2001 eq. 5; d'Eon 2012):
-//   flux     z (1 + sigma d) e^(-sigma d) / d^3     integral 2 pi sign(z) (e^(-sigma|z|) - |z| e^(-sigma d) / d)
-//   fluence  e^(-sigma d) / d                        integral 2 pi (e^(-sigma|z|) - e^(-sigma d)) / sigma
+//   flux     z (1 + sigma d) e^(-sigma d) / d^3     integral 2 pi sign(z) (e^(-sigma|z|) - |z| e^(-sigma d) /
+//   d) fluence  e^(-sigma d) / d                        integral 2 pi (e^(-sigma|z|) - e^(-sigma d)) / sigma
 // (with 2 pi r dr = 2 pi d dd, both integrate in closed form). The dipoles and photon beam
 // diffusion are sums of these; the fluence appears only as a dipole's difference of a real and
 // a virtual source, which is written as one term. Everything is written without the
@@ -59,10 +59,10 @@ template <typename T> T dipoleFluence(const T& zr, const T& zv, const T& sigma, 
   return exp(-sigma * dr) * (apart / (dr * dv) - expm1(-sigma * apart) / dv);
 }
 
-// integral_0^r 2 pi r' dipoleFluence dr' for a dipole with |zv| > zr > 0: 2 pi [e^(-sigma zr) L(|zv| - zr) - e^(-sigma d_r) L(d_v - d_r)], L(x) =
-// oneMinusExpOver(sigma, x), d_v - d_r = (zv^2 - zr^2) / (d_r + d_v). The difference of the two
-// single-source integrals would cancel catastrophically at large r when sigma -> 0 (each grows
-// like r, their difference tends to |zv| - zr); this form has no such cancellation.
+// integral_0^r 2 pi r' dipoleFluence dr' for a dipole with |zv| > zr > 0: 2 pi [e^(-sigma zr) L(|zv| - zr) -
+// e^(-sigma d_r) L(d_v - d_r)], L(x) = oneMinusExpOver(sigma, x), d_v - d_r = (zv^2 - zr^2) / (d_r + d_v).
+// The difference of the two single-source integrals would cancel catastrophically at large r when sigma -> 0
+// (each grows like r, their difference tends to |zv| - zr); this form has no such cancellation.
 template <typename T> T dipoleFluenceIntegral(const T& zr, const T& zv, const T& sigma, const T& r) {
   using std::abs;
   using std::exp;

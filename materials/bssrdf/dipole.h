@@ -19,11 +19,10 @@ namespace scatterlab {
 // A = (1 + Fdr) / (1 - Fdr) of a medium with relative index eta (inside / outside).
 double jensenBoundaryFactor(double eta);
 
-template <typename T> struct JensenDipole {
-  T alphaPrime, sigmaTr, zr, zv;
-};
+template <typename T> struct JensenDipole { T alphaPrime, sigmaTr, zr, zv; };
 
-template <typename T> JensenDipole<T> makeJensenDipole(const T& sigmaSPrime, const T& sigmaA, double boundaryFactor) {
+template <typename T>
+JensenDipole<T> makeJensenDipole(const T& sigmaSPrime, const T& sigmaA, double boundaryFactor) {
   const T sigmaTPrime = sigmaA + sigmaSPrime;
   const T zr = T(1) / sigmaTPrime;
   return {sigmaSPrime / sigmaTPrime, safeSqrt(T(3) * sigmaA * sigmaTPrime), zr,
@@ -32,7 +31,8 @@ template <typename T> JensenDipole<T> makeJensenDipole(const T& sigmaSPrime, con
 
 // Rd(r), mm^-2.
 template <typename T> T jensenDipoleProfile(const JensenDipole<T>& d, const T& r) {
-  return d.alphaPrime * T(1 / (4 * Pi)) * (pointSourceFlux(d.zr, d.sigmaTr, r) + pointSourceFlux(d.zv, d.sigmaTr, r));
+  return d.alphaPrime * T(1 / (4 * Pi)) *
+         (pointSourceFlux(d.zr, d.sigmaTr, r) + pointSourceFlux(d.zv, d.sigmaTr, r));
 }
 
 // integral_0^r 2 pi r' Rd(r') dr'.

@@ -31,7 +31,8 @@ Vec3d entryDirection(const HalfSpaceWalkSettings& s, CounterRng& rng) {
     const Vec3d w = sampleCosineHemisphere(rng.uniform2D());
     const double sinTheta = safeSqrt(1.0 - w.z * w.z);
     const double cx = sinTheta > 0 ? -w.x / sinTheta : 1.0, cy = sinTheta > 0 ? -w.y / sinTheta : 0.0;
-    if (s.eta == 1.0 || rng.uniform() >= fresnelDielectric(w.z, s.eta)) return refractDown(w.z, cx, cy, s.eta);
+    if (s.eta == 1.0 || rng.uniform() >= fresnelDielectric(w.z, s.eta))
+      return refractDown(w.z, cx, cy, s.eta);
   }
   return {0.0, 0.0, -1.0};  // unreachable: the mean transmittance is > 0.5 for eta in (0, 4]
 }
@@ -50,7 +51,8 @@ void HalfSpaceWalkSettings::validate() const {
   if (radiusEdges.size() == 1 || (!radiusEdges.empty() && radiusEdges.front() != 0.0))
     fail("radius edges must start at 0 and hold at least one annulus");
   for (size_t k = 1; k < radiusEdges.size(); ++k)
-    if (!(radiusEdges[k] > radiusEdges[k - 1]) || !std::isfinite(radiusEdges[k])) fail("radius edges must increase");
+    if (!(radiusEdges[k] > radiusEdges[k - 1]) || !std::isfinite(radiusEdges[k]))
+      fail("radius edges must increase");
   if (threads < 0) fail("the thread count must be >= 0");
 }
 
@@ -92,7 +94,8 @@ void HalfSpaceTally::add(const WalkPath& path, const std::vector<double>& radius
     ++escaped;
     const bool single = path.scatteringEvents == 1;
     singleEscaped += single;
-    const size_t k = size_t(std::upper_bound(radiusEdges.begin(), radiusEdges.end(), path.exitRadius) - radiusEdges.begin());
+    const size_t k = size_t(std::upper_bound(radiusEdges.begin(), radiusEdges.end(), path.exitRadius) -
+                            radiusEdges.begin());
     if (k >= 1 && k <= counts.size()) {
       ++counts[k - 1];
       singleCounts[k - 1] += single;
@@ -112,7 +115,8 @@ void HalfSpaceTally::merge(const HalfSpaceTally& other) {
   }
 }
 
-void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last, HalfSpaceTally& tally) {
+void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last,
+                         HalfSpaceTally& tally) {
   for (uint64_t i = first; i < last; ++i) {
     CounterRng rng(settings.seed, i);
     tally.add(traceHalfSpacePath(settings, rng), settings.radiusEdges);
@@ -156,7 +160,8 @@ std::vector<double> HalfSpaceWalkResult::multipleScatteringProfile() const {
 }
 
 std::vector<double> logRadiusEdges(double first, double last, int n) {
-  if (!(first > 0) || !(last > first) || n < 2) throw std::invalid_argument("logRadiusEdges: need 0 < first < last, n >= 2");
+  if (!(first > 0) || !(last > first) || n < 2)
+    throw std::invalid_argument("logRadiusEdges: need 0 < first < last, n >= 2");
   std::vector<double> edges{0.0};
   for (int k = 0; k < n; ++k) edges.push_back(first * std::pow(last / first, double(k) / (n - 1)));
   return edges;

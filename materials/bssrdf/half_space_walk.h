@@ -89,7 +89,8 @@ struct HalfSpaceTally {
 };
 
 // Traces paths [first, last) of the settings (path i from CounterRng(seed, i)) into the tally.
-void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last, HalfSpaceTally& tally);
+void traceHalfSpacePaths(const HalfSpaceWalkSettings& settings, uint64_t first, uint64_t last,
+                         HalfSpaceTally& tally);
 
 // Total reflectance and R(r) per annulus with their binomial standard errors, from the tally
 // of all settings.paths paths.

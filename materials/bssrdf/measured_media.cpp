@@ -26,7 +26,8 @@ const std::array<MeasuredMedium, 12> Media{{
 std::span<const MeasuredMedium> measuredMedia() { return Media; }
 
 const MeasuredMedium* findMeasuredMedium(std::string_view name) {
-  const auto it = std::find_if(Media.begin(), Media.end(), [&](const MeasuredMedium& m) { return name == m.name; });
+  const auto it =
+      std::find_if(Media.begin(), Media.end(), [&](const MeasuredMedium& m) { return name == m.name; });
   return it == Media.end() ? nullptr : &*it;
 }
 

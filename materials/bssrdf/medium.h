@@ -35,7 +35,8 @@ struct ScatteringMedium {
                                     " has sigma_s + sigma_a = 0 (no interaction: no subsurface profile)");
     }
     if (!(g > -1 && g < 1)) throw std::invalid_argument("scattering medium: g must be in (-1, 1)");
-    if (!(eta > 0) || !std::isfinite(eta)) throw std::invalid_argument("scattering medium: eta must be positive");
+    if (!(eta > 0) || !std::isfinite(eta))
+      throw std::invalid_argument("scattering medium: eta must be positive");
   }
 
  private:

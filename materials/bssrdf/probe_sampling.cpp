@@ -25,10 +25,12 @@ std::pair<int, double> chooseIndex(const std::array<double, 3>& p, double u) {
 void checkProbabilities(const std::array<double, 3>& p, const char* what) {
   double sum = 0;
   for (double x : p) {
-    if (!(x >= 0) || !std::isfinite(x)) throw std::invalid_argument(std::string("probe sampling: negative ") + what);
+    if (!(x >= 0) || !std::isfinite(x))
+      throw std::invalid_argument(std::string("probe sampling: negative ") + what);
     sum += x;
   }
-  if (std::abs(sum - 1.0) > 1e-12) throw std::invalid_argument(std::string("probe sampling: ") + what + " do not sum to 1");
+  if (std::abs(sum - 1.0) > 1e-12)
+    throw std::invalid_argument(std::string("probe sampling: ") + what + " do not sum to 1");
 }
 
 Vec3d axisOf(const Framed& frame, int axis) { return axis == 0 ? frame.n : (axis == 1 ? frame.s : frame.t); }
@@ -45,7 +47,8 @@ ProbeSampling defaultProbeSampling(const RadialProfile& profile) {
   return sampling;
 }
 
-ProbeSampler::ProbeSampler(const RadialProfile& profile) : ProbeSampler(profile, defaultProbeSampling(profile)) {}
+ProbeSampler::ProbeSampler(const RadialProfile& profile)
+    : ProbeSampler(profile, defaultProbeSampling(profile)) {}
 
 ProbeSampler::ProbeSampler(const RadialProfile& profile, const ProbeSampling& sampling)
     : profile_(&profile), sampling_(sampling) {
@@ -59,7 +62,8 @@ ProbeSampler::ProbeSampler(const RadialProfile& profile, const ProbeSampling& sa
 
 double ProbeSampler::largestRadius() const { return *std::max_element(maxRadius_.begin(), maxRadius_.end()); }
 
-ProbeSegment ProbeSampler::sample(const Framed& frame, const Vec3d& origin, double uChoice, const Vec2d& u) const {
+ProbeSegment ProbeSampler::sample(const Framed& frame, const Vec3d& origin, double uChoice,
+                                  const Vec2d& u) const {
   const auto [axis, uChannel] = chooseIndex(sampling_.axisProbability, uChoice);
   const int channel = chooseIndex(sampling_.channelProbability, uChannel).first;
   const double r = profile_->sampleRadius(channel, u.x * sampling_.truncation);
@@ -76,7 +80,8 @@ double ProbeSampler::diskDensity(int channel, double r) const {
   return profile_->radiusPdf(channel, r) / (sampling_.truncation * 2.0 * Pi * r);
 }
 
-double ProbeSampler::pdf(const Framed& frame, const Vec3d& origin, const Vec3d& xo, const Vec3d& normalAtExit) const {
+double ProbeSampler::pdf(const Framed& frame, const Vec3d& origin, const Vec3d& xo,
+                         const Vec3d& normalAtExit) const {
   const Vec3d d = xo - origin;
   const double distance2 = glm::dot(d, d);
   double total = 0.0;

@@ -24,7 +24,8 @@ std::shared_ptr<const RadialProfile> makeBurley(const ScatteringMedium& medium, 
     if (fit == BurleyFit::SearchlightDiffuseMfp) {
       const double sigmaTr = std::sqrt(3.0 * medium.sigmaA[c] * sigmaTPrime[c]);
       if (!(sigmaTr > 0))
-        throw std::invalid_argument("Burley's diffuse-mean-free-path fit needs absorption (sigma_a > 0) in every channel");
+        throw std::invalid_argument(
+            "Burley's diffuse-mean-free-path fit needs absorption (sigma_a > 0) in every channel");
       length = 1.0 / sigmaTr;
     }
     shape[c] = length / burleyShapeFactor(fit, albedo[c]);
@@ -44,17 +45,16 @@ std::string toString(ProfileModel model) {
   return "unknown";
 }
 
-std::shared_ptr<const RadialProfile> makeProfile(ProfileModel model, const ScatteringMedium& medium, BurleyFit fit) {
+std::shared_ptr<const RadialProfile> makeProfile(ProfileModel model, const ScatteringMedium& medium,
+                                                 BurleyFit fit) {
   medium.validate();
   switch (model) {
     case ProfileModel::Dipole:
       return std::make_shared<JensenDipoleProfile>(medium.reducedScattering(), medium.sigmaA, medium.eta);
     case ProfileModel::BetterDipole:
       return std::make_shared<BetterDipoleProfile>(medium.reducedScattering(), medium.sigmaA, medium.eta);
-    case ProfileModel::BeamDiffusion:
-      return std::make_shared<BeamDiffusionProfile>(medium);
-    case ProfileModel::Burley:
-      return makeBurley(medium, fit);
+    case ProfileModel::BeamDiffusion: return std::make_shared<BeamDiffusionProfile>(medium);
+    case ProfileModel::Burley: return makeBurley(medium, fit);
   }
   throw std::logic_error("unhandled profile model");
 }
@@ -62,13 +62,11 @@ std::shared_ptr<const RadialProfile> makeProfile(ProfileModel model, const Scatt
 double totalReflectanceOfAlbedo(ProfileModel model, double albedo, double g, double eta) {
   switch (model) {
     case ProfileModel::Dipole:
-    case ProfileModel::Burley:
-      return jensenDipoleTotal(albedo, jensenBoundaryFactor(eta));
+    case ProfileModel::Burley: return jensenDipoleTotal(albedo, jensenBoundaryFactor(eta));
     case ProfileModel::BetterDipole:
       // Dimensionless: with sigma_t' = 1 the total depends on alpha' and eta alone.
       return betterDipoleTotal(makeBetterDipole(albedo, 1.0 - albedo, fresnelBoundary(eta)));
-    case ProfileModel::BeamDiffusion:
-      return BeamDiffusionTable::shared(g, eta)->effectiveAlbedo(albedo);
+    case ProfileModel::BeamDiffusion: return BeamDiffusionTable::shared(g, eta)->effectiveAlbedo(albedo);
   }
   throw std::logic_error("unhandled profile model");
 }
@@ -77,21 +75,23 @@ double largestTotalReflectance(ProfileModel model, double g, double eta) {
   return totalReflectanceOfAlbedo(model, 1.0, g, eta);
 }
 
-ScatteringMedium mediumFromReflectance(ProfileModel model, const Rgb& reflectance, const Rgb& meanFreePath, double g,
-                                       double eta) {
+ScatteringMedium mediumFromReflectance(ProfileModel model, const Rgb& reflectance, const Rgb& meanFreePath,
+                                       double g, double eta) {
   ScatteringMedium medium;
   medium.g = g;
   medium.eta = eta;
   const double largest = largestTotalReflectance(model, g, eta);
   for (int c = 0; c < 3; ++c) {
     if (!(reflectance[c] >= 0) || reflectance[c] > largest + 1e-12)
-      throw std::invalid_argument("channel " + std::to_string(c) + ": reflectance " + std::to_string(reflectance[c]) +
-                                  " is beyond what " + toString(model) + " reflects at albedo 1 (" +
-                                  std::to_string(largest) + ")");
+      throw std::invalid_argument("channel " + std::to_string(c) + ": reflectance " +
+                                  std::to_string(reflectance[c]) + " is beyond what " + toString(model) +
+                                  " reflects at albedo 1 (" + std::to_string(largest) + ")");
     if (!(meanFreePath[c] > 0) || !std::isfinite(meanFreePath[c]))
-      throw std::invalid_argument("channel " + std::to_string(c) + ": the mean free path must be positive and finite");
-    const double albedo = bisectIncreasing(
-        [&](double a) { return totalReflectanceOfAlbedo(model, a, g, eta); }, reflectance[c], 0.0, 1.0, AlbedoTolerance);
+      throw std::invalid_argument("channel " + std::to_string(c) +
+                                  ": the mean free path must be positive and finite");
+    const double albedo =
+        bisectIncreasing([&](double a) { return totalReflectanceOfAlbedo(model, a, g, eta); }, reflectance[c],
+                         0.0, 1.0, AlbedoTolerance);
     const double sigmaT = 1.0 / meanFreePath[c];
     if (model == ProfileModel::BeamDiffusion) {
       // The table's albedo is the single-scattering one (optical units of sigma_t).

@@ -32,7 +32,8 @@ enum class SubsurfaceBoundary { Smooth, Rough };
 
 // The profile of `model` for `medium` (validated). Throws std::invalid_argument when the
 // medium does not define one (Burley's dmfp fit needs absorption).
-std::shared_ptr<const RadialProfile> makeProfile(ProfileModel model, const ScatteringMedium& medium, BurleyFit fit);
+std::shared_ptr<const RadialProfile> makeProfile(ProfileModel model, const ScatteringMedium& medium,
+                                                 BurleyFit fit);
 
 // The model's total diffuse reflectance as a function of its albedo for one (g, eta): the
 // reduced albedo alpha' for the dipoles and Burley (the dipole's), the single-scattering albedo
@@ -43,8 +44,8 @@ double largestTotalReflectance(ProfileModel model, double g, double eta);
 // The medium whose `model` reflects `reflectance` per channel (in [0, largest]) with mean free
 // path 1 / sigma_t = meanFreePath (mm, > 0). Throws std::invalid_argument naming the channel
 // when a reflectance is out of the model's reach.
-ScatteringMedium mediumFromReflectance(ProfileModel model, const Rgb& reflectance, const Rgb& meanFreePath, double g,
-                                       double eta);
+ScatteringMedium mediumFromReflectance(ProfileModel model, const Rgb& reflectance, const Rgb& meanFreePath,
+                                       double g, double eta);
 
 struct SubsurfaceMaterial {
   ProfileModel model = ProfileModel::Burley;

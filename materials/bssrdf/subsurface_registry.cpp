@@ -16,11 +16,12 @@ constexpr std::array<NamedChoice<ProfileModel>, 4> Profiles{{{"dipole", ProfileM
                                                              {"better-dipole", ProfileModel::BetterDipole},
                                                              {"beam-diffusion", ProfileModel::BeamDiffusion},
                                                              {"burley", ProfileModel::Burley}}};
-constexpr std::array<NamedChoice<BurleyFit>, 3> BurleyFits{{{"searchlight", BurleyFit::Searchlight},
-                                                            {"diffuse", BurleyFit::DiffuseTransmission},
-                                                            {"searchlight-dmfp", BurleyFit::SearchlightDiffuseMfp}}};
-constexpr std::array<NamedChoice<SubsurfaceBoundary>, 2> Boundaries{{{"smooth", SubsurfaceBoundary::Smooth},
-                                                                     {"rough", SubsurfaceBoundary::Rough}}};
+constexpr std::array<NamedChoice<BurleyFit>, 3> BurleyFits{
+    {{"searchlight", BurleyFit::Searchlight},
+     {"diffuse", BurleyFit::DiffuseTransmission},
+     {"searchlight-dmfp", BurleyFit::SearchlightDiffuseMfp}}};
+constexpr std::array<NamedChoice<SubsurfaceBoundary>, 2> Boundaries{
+    {{"smooth", SubsurfaceBoundary::Smooth}, {"rough", SubsurfaceBoundary::Rough}}};
 
 // Jensen et al. 2001 use 1.3 for every medium but marble (1.5).
 constexpr double DefaultEta = 1.3;
@@ -78,7 +79,8 @@ ScatteringMedium mediumOf(const MaterialParameters& p, ProfileModel model, const
     try {
       medium = mediumFromReflectance(model, p.rgb("reflectance"), p.rgb("mfp"), g, eta);
     } catch (const std::invalid_argument& error) {
-      throwMaterialKeyError("reflectance", completed["reflectance"], std::string("is out of reach (") + error.what() + ")",
+      throwMaterialKeyError("reflectance", completed["reflectance"],
+                            std::string("is out of reach (") + error.what() + ")",
                             "a reflectance the profile can produce at this eta and g");
     }
   }
@@ -90,21 +92,26 @@ ScatteringMedium mediumOf(const MaterialParameters& p, ProfileModel model, const
 SubsurfaceMaterial buildSubsurface(const MaterialParameters& p, const json& completed) {
   SubsurfaceMaterial material;
   material.model = choiceValue(Profiles, p.choice("profile"));
-  material.burleyFit = p.has("burley_fit") ? choiceValue(BurleyFits, p.choice("burley_fit")) : BurleyFit::Searchlight;
+  material.burleyFit =
+      p.has("burley_fit") ? choiceValue(BurleyFits, p.choice("burley_fit")) : BurleyFit::Searchlight;
   material.boundary = choiceValue(Boundaries, p.choice("boundary"));
   material.roughness = p.has("roughness") ? p.number("roughness") : 0.0;
   material.medium = mediumOf(p, material.model, completed);
   try {
     material.profile = makeProfile(material.model, material.medium, material.burleyFit);
   } catch (const std::invalid_argument& error) {
-    throwMaterialKeyError("burley_fit", completed.value("burley_fit", json()), std::string("cannot be used here (") + error.what() + ")",
+    throwMaterialKeyError("burley_fit", completed.value("burley_fit", json()),
+                          std::string("cannot be used here (") + error.what() + ")",
                           "\"searchlight\" or \"diffuse\" for a medium without absorption");
   }
   return material;
 }
 
 ParameterSpec rgbParameter(std::string name, const ValueRange& range, std::string description) {
-  return {.name = std::move(name), .kind = ParameterKind::Rgb, .range = range, .description = std::move(description)};
+  return {.name = std::move(name),
+          .kind = ParameterKind::Rgb,
+          .range = range,
+          .description = std::move(description)};
 }
 
 }  // namespace
@@ -113,11 +120,13 @@ MaterialModel subsurfaceMaterialModel() {
   return {
       .type = "subsurface",
       .kind = MaterialKind::Subsurface,
-      .description = "Subsurface scattering (BSSRDF): a radial diffusion profile per RGB channel, sampled exactly "
-                     "(radius and multi-axis probe), behind a smooth or rough dielectric boundary",
-      .citation = "Jensen et al. 2001 (dipole, measured media); d'Eon 2012 (better dipole); Habel et al. 2013 and "
-                  "pbrt-v3 (photon beam diffusion); Christensen & Burley 2015 (normalised diffusion); King et al. "
-                  "2013 (probe sampling)",
+      .description =
+          "Subsurface scattering (BSSRDF): a radial diffusion profile per RGB channel, sampled exactly "
+          "(radius and multi-axis probe), behind a smooth or rough dielectric boundary",
+      .citation =
+          "Jensen et al. 2001 (dipole, measured media); d'Eon 2012 (better dipole); Habel et al. 2013 and "
+          "pbrt-v3 (photon beam diffusion); Christensen & Burley 2015 (normalised diffusion); King et al. "
+          "2013 (probe sampling)",
       .parameters =
           {{.name = "profile",
             .kind = ParameterKind::Choice,
@@ -129,21 +138,26 @@ MaterialModel subsurfaceMaterialModel() {
             .choices = measuredMediumNames(),
             .defaultValue = "Skin1",
             .description = "a measured medium of Jensen et al. 2001 (reduced coefficients, mm^-1)"},
-           rgbParameter("sigma_s", ValueRange::atLeast(0.0), "scattering coefficient per channel, mm^-1, with \"sigma_a\""),
-           rgbParameter("sigma_a", ValueRange::atLeast(0.0), "absorption coefficient per channel, mm^-1, with \"sigma_s\""),
+           rgbParameter("sigma_s", ValueRange::atLeast(0.0),
+                        "scattering coefficient per channel, mm^-1, with \"sigma_a\""),
+           rgbParameter("sigma_a", ValueRange::atLeast(0.0),
+                        "absorption coefficient per channel, mm^-1, with \"sigma_s\""),
            rgbParameter("reflectance", ValueRange::closed(0.0, 1.0),
                         "diffuse colour: the profile's total diffuse reflectance per channel, with \"mfp\""),
-           rgbParameter("mfp", ValueRange::above(0.0), "mean free path 1 / sigma_t per channel, mm, with \"reflectance\""),
+           rgbParameter("mfp", ValueRange::above(0.0),
+                        "mean free path 1 / sigma_t per channel, mm, with \"reflectance\""),
            {.name = "eta",
             .kind = ParameterKind::Number,
             .range = EtaRange,
-            .description = "index of refraction inside relative to outside; default: the medium's (1.3, Marble 1.5), "
-                           "else 1.3"},
+            .description =
+                "index of refraction inside relative to outside; default: the medium's (1.3, Marble 1.5), "
+                "else 1.3"},
            {.name = "g",
             .kind = ParameterKind::Number,
             .range = ValueRange{-1.0, 1.0, true, true},
             .defaultValue = 0.0,
-            .description = "Henyey-Greenstein mean cosine (a medium's table sigma_s' is kept: sigma_s = sigma_s' / (1 - g))"},
+            .description = "Henyey-Greenstein mean cosine (a medium's table sigma_s' is kept: sigma_s = "
+                           "sigma_s' / (1 - g))"},
            {.name = "scale",
             .kind = ParameterKind::Number,
             .range = ValueRange::above(0.0),
@@ -152,14 +166,16 @@ MaterialModel subsurfaceMaterialModel() {
            {.name = "burley_fit",
             .kind = ParameterKind::Choice,
             .choices = choiceNames(BurleyFits),
-            .description = "burley only (default \"searchlight\"): the shape factor s(A) fitted to a searchlight "
-                           "(d = mfp / s), diffuse transmission (d = mfp / s), or a searchlight with the diffuse mean "
-                           "free path (d = dmfp / s)"},
+            .description =
+                "burley only (default \"searchlight\"): the shape factor s(A) fitted to a searchlight "
+                "(d = mfp / s), diffuse transmission (d = mfp / s), or a searchlight with the diffuse mean "
+                "free path (d = dmfp / s)"},
            {.name = "boundary",
             .kind = ParameterKind::Choice,
             .choices = choiceNames(Boundaries),
             .defaultValue = "smooth",
-            .description = "the interface of the medium (for rendering): smooth or rough dielectric of index eta"},
+            .description =
+                "the interface of the medium (for rendering): smooth or rough dielectric of index eta"},
            {.name = "roughness",
             .kind = ParameterKind::Number,
             .range = RoughnessRange,

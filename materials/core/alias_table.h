@@ -52,7 +52,8 @@ class AliasTable {
     const double f = scaled - double(i);
     const Slot& slot = slots[i];
     if (f < double(slot.threshold)) return {i, std::min(f / double(slot.threshold), OneMinusEpsilon)};
-    return {slot.alias, std::min((f - double(slot.threshold)) / (1.0 - double(slot.threshold)), OneMinusEpsilon)};
+    return {slot.alias,
+            std::min((f - double(slot.threshold)) / (1.0 - double(slot.threshold)), OneMinusEpsilon)};
   }
 
   // Vose's construction into `slots` (resized to weights.size()); returns the total weight.
@@ -63,7 +64,8 @@ class AliasTable {
     probabilities_.assign(n, 0.0);
     total_ = 0.0;
     for (const double w : weights) {
-      if (!(w >= 0) || !std::isfinite(w)) throw std::invalid_argument("AliasTable: weights must be finite and non-negative");
+      if (!(w >= 0) || !std::isfinite(w))
+        throw std::invalid_argument("AliasTable: weights must be finite and non-negative");
       total_ += w;
     }
     if (!(total_ > 0)) return total_;
@@ -89,8 +91,8 @@ class AliasTable {
     for (const uint32_t i : large) slots[i] = {1.0f, i};
     // A zero-weight cell must never be chosen: its slot goes entirely to its alias, which
     // (should round-off have left the slot its own alias) is then any cell of positive weight.
-    const uint32_t positive = uint32_t(std::find_if(weights.begin(), weights.end(), [](double w) { return w > 0; }) -
-                                       weights.begin());
+    const uint32_t positive = uint32_t(
+        std::find_if(weights.begin(), weights.end(), [](double w) { return w > 0; }) - weights.begin());
     for (size_t i = 0; i < n; ++i)
       if (weights[i] == 0) {
         slots[i].threshold = 0.0f;

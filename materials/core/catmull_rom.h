@@ -17,7 +17,8 @@ namespace scatterlab {
 
 // The cubic through p1 at t = 0 and p2 at t = 1 with slopes (p2 - p0) / 2 and (p3 - p1) / 2.
 inline double catmullRom(double p0, double p1, double p2, double p3, double t) {
-  return p1 + 0.5 * t * (p2 - p0 + t * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + t * (3.0 * (p1 - p2) + p3 - p0)));
+  return p1 +
+         0.5 * t * (p2 - p0 + t * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + t * (3.0 * (p1 - p2) + p3 - p0)));
 }
 
 // Values at the nodes (i / (rows - 1), j / (cols - 1)) of [0, 1]^2, row-major; a table with one
@@ -29,7 +30,8 @@ class CatmullRomTable2D {
       : rows_(rows), cols_(cols), values_(std::move(values)) {
     if (rows < 1 || cols < 1 || (rows < 3 && rows != 1) || (cols < 3 && cols != 1) ||
         values_.size() != size_t(rows) * size_t(cols))
-      throw std::invalid_argument("a Catmull-Rom table needs 1 or at least 3 nodes per axis and rows x cols values");
+      throw std::invalid_argument(
+          "a Catmull-Rom table needs 1 or at least 3 nodes per axis and rows x cols values");
   }
 
   int rows() const { return rows_; }
@@ -98,7 +100,8 @@ inline CatmullRomWeights catmullRomWeights(std::span<const double> nodes, double
   const int n = int(nodes.size());
   if (n < 2) throw std::invalid_argument("catmullRomWeights needs at least two nodes");
   x = std::clamp(x, nodes.front(), nodes.back());
-  const int i = std::clamp(int(std::upper_bound(nodes.begin(), nodes.end(), x) - nodes.begin()) - 1, 0, n - 2);
+  const int i =
+      std::clamp(int(std::upper_bound(nodes.begin(), nodes.end(), x) - nodes.begin()) - 1, 0, n - 2);
   const double x1 = nodes[i], x2 = nodes[i + 1], width = x2 - x1;
   const double t = (x - x1) / width, t2 = t * t, t3 = t2 * t;
   // Hermite basis: value h00 f1 + h01 f2, slopes (in units of t) h10 m1 + h11 m2.

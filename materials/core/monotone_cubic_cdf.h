@@ -28,10 +28,12 @@ class MonotoneCubicCdf {
       : x_(std::move(x)), F_(std::move(F)), f_(std::move(f)) {
     const size_t n = x_.size();
     if (n < 2 || F_.size() != n || f_.size() != n)
-      throw std::invalid_argument("MonotoneCubicCdf needs at least two nodes and one value and density per node");
+      throw std::invalid_argument(
+          "MonotoneCubicCdf needs at least two nodes and one value and density per node");
     for (size_t k = 0; k < n; ++k) {
       if (!std::isfinite(x_[k]) || !std::isfinite(F_[k]) || !(f_[k] >= 0) || !std::isfinite(f_[k]))
-        throw std::invalid_argument("MonotoneCubicCdf: nodes, values and densities must be finite, densities >= 0");
+        throw std::invalid_argument(
+            "MonotoneCubicCdf: nodes, values and densities must be finite, densities >= 0");
       if (k > 0 && (!(x_[k] > x_[k - 1]) || F_[k] < F_[k - 1]))
         throw std::invalid_argument("MonotoneCubicCdf: nodes must increase and values must not decrease");
     }
@@ -70,8 +72,11 @@ class MonotoneCubicCdf {
     // The first interval whose upper value reaches the target.
     const size_t upperNode = size_t(std::lower_bound(F_.begin() + 1, F_.end(), target) - F_.begin());
     const size_t k = std::min(upperNode, F_.size() - 1) - 1;
-    const double t = solveIncreasing([&](double s) { return ValueAndSlope{piece(k, s), pieceSlope(k, s)}; }, target,
-                                     0.0, 1.0, (target - F_[k]) / std::max(F_[k + 1] - F_[k], 1e-300), 1e-15);
+    const double t = solveIncreasing(
+        [&](double s) {
+          return ValueAndSlope{piece(k, s), pieceSlope(k, s)};
+        },
+        target, 0.0, 1.0, (target - F_[k]) / std::max(F_[k + 1] - F_[k], 1e-300), 1e-15);
     return x_[k] + t * width(k);
   }
 
@@ -90,7 +95,8 @@ class MonotoneCubicCdf {
   }
   double pieceSlope(size_t k, double t) const {
     const double t2 = t * t, h = width(k);
-    return (6 * t2 - 6 * t) * (F_[k] - F_[k + 1]) + (3 * t2 - 4 * t + 1) * h * f_[k] + (3 * t2 - 2 * t) * h * f_[k + 1];
+    return (6 * t2 - 6 * t) * (F_[k] - F_[k + 1]) + (3 * t2 - 4 * t + 1) * h * f_[k] +
+           (3 * t2 - 2 * t) * h * f_[k + 1];
   }
 
   std::vector<double> x_, F_, f_;

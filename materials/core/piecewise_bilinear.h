@@ -54,7 +54,8 @@ class PiecewiseBilinear2D {
       }
     }
     std::vector<double> cellMass(nx - 1);
-    for (size_t i = 0; i + 1 < nx; ++i) cellMass[i] = 0.5 * (x_[i + 1] - x_[i]) * (rowIntegral(i) + rowIntegral(i + 1));
+    for (size_t i = 0; i + 1 < nx; ++i)
+      cellMass[i] = 0.5 * (x_[i + 1] - x_[i]) * (rowIntegral(i) + rowIntegral(i + 1));
     marginal_ = PiecewiseConstant1D(cellMass);
   }
 
@@ -79,7 +80,9 @@ class PiecewiseBilinear2D {
     const double t = sampleLinear(cell.remapped, rowIntegral(i), rowIntegral(i + 1));
     const double x = x_[i] + t * (x_[i + 1] - x_[i]);
     // The conditional over y at x: rows i and i + 1 interpolated, cumulative sums likewise.
-    const auto cumulative = [&](size_t j) { return (1 - t) * cumulative_[i * ny + j] + t * cumulative_[(i + 1) * ny + j]; };
+    const auto cumulative = [&](size_t j) {
+      return (1 - t) * cumulative_[i * ny + j] + t * cumulative_[(i + 1) * ny + j];
+    };
     const double target = u.y * cumulative(ny - 1);
     size_t lo = 0, hi = ny - 1;  // the last j with cumulative(j) <= target, j < ny - 1
     while (hi - lo > 1) {

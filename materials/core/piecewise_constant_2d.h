@@ -45,7 +45,8 @@ class PiecewiseConstant2D {
 
   // Probability of cell (row, column); 0 for an empty distribution.
   double probability(size_t row, size_t column) const {
-    return rowSums_[row] > 0 ? marginal_.probability(row) * weights_[row * columns_ + column] / rowSums_[row] : 0.0;
+    return rowSums_[row] > 0 ? marginal_.probability(row) * weights_[row * columns_ + column] / rowSums_[row]
+                             : 0.0;
   }
 
   struct Sample {
@@ -63,7 +64,7 @@ class PiecewiseConstant2D {
  private:
   size_t rows_ = 0, columns_ = 0;
   std::vector<double> weights_, rowSums_;
-  PiecewiseConstant1D marginal_;          // over rows
+  PiecewiseConstant1D marginal_;         // over rows
   std::vector<AliasTable::Slot> slots_;  // each row's alias table, row-major
 };
 

@@ -21,9 +21,11 @@ class PiecewiseCubic1D {
   // x strictly increasing, at least 3 nodes; one value per node.
   PiecewiseCubic1D(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
     const size_t n = x_.size();
-    if (n < 3 || y_.size() != n) throw std::invalid_argument("PiecewiseCubic1D: needs >= 3 nodes and one value each");
+    if (n < 3 || y_.size() != n)
+      throw std::invalid_argument("PiecewiseCubic1D: needs >= 3 nodes and one value each");
     for (size_t i = 0; i + 1 < n; ++i)
-      if (!(x_[i + 1] > x_[i])) throw std::invalid_argument("PiecewiseCubic1D: nodes must be strictly increasing");
+      if (!(x_[i + 1] > x_[i]))
+        throw std::invalid_argument("PiecewiseCubic1D: nodes must be strictly increasing");
     slope_.resize(n);
     for (size_t i = 0; i < n; ++i) {
       // The parabola through nodes k - 1, k, k + 1 (k the interior node nearest i), differentiated at x_i.
@@ -47,8 +49,8 @@ class PiecewiseCubic1D {
     const double h = x_[i + 1] - x_[i], t = (x - x_[i]) / h;
     // The cubic Hermite basis.
     const double t2 = t * t, t3 = t2 * t;
-    return (2 * t3 - 3 * t2 + 1) * y_[i] + (t3 - 2 * t2 + t) * h * slope_[i] + (-2 * t3 + 3 * t2) * y_[i + 1] +
-           (t3 - t2) * h * slope_[i + 1];
+    return (2 * t3 - 3 * t2 + 1) * y_[i] + (t3 - 2 * t2 + t) * h * slope_[i] +
+           (-2 * t3 + 3 * t2) * y_[i + 1] + (t3 - t2) * h * slope_[i + 1];
   }
 
  private:

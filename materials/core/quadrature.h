@@ -82,9 +82,8 @@ auto adaptiveSimpson(const F& f, double a, double b, const QuadratureOptions& op
 // Integral of f(x, y) over [x0, x1] x [y0, y1], as an outer integral over x of inner
 // integrals over y. The inner tolerance is scaled so that its error summed over the outer
 // interval stays within the outer tolerance.
-template <typename F>
-auto adaptiveSimpson2D(const F& f, double x0, double x1, double y0, double y1,
-                       const QuadratureOptions& options = {}) {
+template <typename F> auto adaptiveSimpson2D(const F& f, double x0, double x1, double y0, double y1,
+                                             const QuadratureOptions& options = {}) {
   QuadratureOptions inner = options;
   inner.absoluteTolerance = options.absoluteTolerance / std::max(x1 - x0, 1e-300) * 0.1;
   auto integrateY = [&](double x) {

@@ -48,8 +48,9 @@ class CounterRng {
 
  private:
   void refill() {
-    block_ = philox({uint32_t(counter_), uint32_t(counter_ >> 32), uint32_t(stream_), uint32_t(stream_ >> 32)},
-                    {uint32_t(key_), uint32_t(key_ >> 32)});
+    block_ =
+        philox({uint32_t(counter_), uint32_t(counter_ >> 32), uint32_t(stream_), uint32_t(stream_ >> 32)},
+               {uint32_t(key_), uint32_t(key_ >> 32)});
     ++counter_;
     cached_ = 4;
   }

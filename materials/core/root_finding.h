@@ -28,7 +28,10 @@ double solveIncreasing(const G& g, double target, double lo, double hi, double i
     const ValueAndSlope v = g(x);
     const double excess = v.value - target;
     if (excess == 0.0) return x;
-    if (excess > 0) hi = x; else lo = x;
+    if (excess > 0)
+      hi = x;
+    else
+      lo = x;
     if (v.slope > 0) {
       const double newton = x - excess / v.slope;
       // Tested before the bracket: a converged step may land on the bracket's end.
@@ -43,10 +46,14 @@ double solveIncreasing(const G& g, double target, double lo, double hi, double i
 }
 
 // `g(x) -> double`, non-decreasing on [lo, hi].
-template <typename G> double bisectIncreasing(const G& g, double target, double lo, double hi, double xTolerance) {
+template <typename G>
+double bisectIncreasing(const G& g, double target, double lo, double hi, double xTolerance) {
   for (int iteration = 0; iteration < 200 && hi - lo > xTolerance; ++iteration) {
     const double mid = 0.5 * (lo + hi);
-    if (g(mid) < target) lo = mid; else hi = mid;
+    if (g(mid) < target)
+      lo = mid;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }

@@ -8,7 +8,10 @@ namespace scatterlab {
 
 template <typename T> T cosTheta(const Vec3<T>& w) { return w.z; }
 template <typename T> T cos2Theta(const Vec3<T>& w) { return w.z * w.z; }
-template <typename T> T absCosTheta(const Vec3<T>& w) { using std::abs; return abs(w.z); }
+template <typename T> T absCosTheta(const Vec3<T>& w) {
+  using std::abs;
+  return abs(w.z);
+}
 template <typename T> T sin2Theta(const Vec3<T>& w) {
   const T s = T(1) - cos2Theta(w);
   return s > T(0) ? s : T(0);
@@ -27,9 +30,7 @@ template <typename T> T sinPhi(const Vec3<T>& w) {
   return s == T(0) ? T(0) : clampTo(w.y / s, -1.0, 1.0);
 }
 
-template <typename T> bool sameHemisphere(const Vec3<T>& a, const Vec3<T>& b) {
-  return a.z * b.z > T(0);
-}
+template <typename T> bool sameHemisphere(const Vec3<T>& a, const Vec3<T>& b) { return a.z * b.z > T(0); }
 
 template <typename T> Vec3<T> sphericalDirection(T sinTheta, T cosTheta, T phi) {
   using std::cos;

@@ -60,8 +60,8 @@ inline Vec2d invertConcentricDisk(const Vec2d& p) {
   // Undo the four wedges of the forward map; r keeps the sign of o.x (|o.x| > |o.y| wedges)
   // or of o.y (the others).
   if (phi < -PiOver4) phi += 2.0 * Pi;  // now in [-pi/4, 7pi/4)
-  double a, b;  // (o.x, o.y)
-  if (phi < PiOver4) {  // right wedge: r = o.x > 0, theta = pi/4 * o.y / o.x
+  double a, b;                          // (o.x, o.y)
+  if (phi < PiOver4) {                  // right wedge: r = o.x > 0, theta = pi/4 * o.y / o.x
     a = r;
     b = phi * a / PiOver4;
   } else if (phi < 3.0 * PiOver4) {  // top: r = o.y > 0, theta = pi/2 - pi/4 * o.x / o.y

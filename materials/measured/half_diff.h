@@ -51,7 +51,7 @@ inline std::pair<Vec3d, Vec3d> directionsFromHalfDiff(double thetaHalf, double p
   const double cosP = std::cos(phiHalf), sinP = std::sin(phiHalf);
   const auto toWorld = [&](const Vec3d& v) {
     const double x1 = v.x * cosT + v.z * sinT, z1 = -v.x * sinT + v.z * cosT;  // R_y(theta_h)
-    return Vec3d(x1 * cosP - v.y * sinP, x1 * sinP + v.y * cosP, z1);       // R_z(phi_h)
+    return Vec3d(x1 * cosP - v.y * sinP, x1 * sinP + v.y * cosP, z1);          // R_z(phi_h)
   };
   return {toWorld(d), toWorld(Vec3d(-d.x, -d.y, d.z))};
 }
@@ -59,7 +59,8 @@ inline std::pair<Vec3d, Vec3d> directionsFromHalfDiff(double thetaHalf, double p
 // cos of the polar angles of wi and wo at (theta_h, theta_d, phi_d), without building them:
 // the z components of R_y(theta_h) (+-d.x, +-d.y, d.z). Both positive iff the pair is a
 // reflection above the surface.
-inline std::pair<double, double> polarCosinesFromHalfDiff(double thetaHalf, double thetaDiff, double phiDiff) {
+inline std::pair<double, double> polarCosinesFromHalfDiff(double thetaHalf, double thetaDiff,
+                                                          double phiDiff) {
   const double a = std::cos(thetaDiff) * std::cos(thetaHalf);
   const double b = std::sin(thetaDiff) * std::cos(phiDiff) * std::sin(thetaHalf);
   return {a - b, a + b};

@@ -27,7 +27,8 @@ Vec2d gridCoordinates(const Vec3d& h, const Vec2d& azimuthI) {
 
 }  // namespace
 
-HalfVectorSampler::HalfVectorSampler(const Brdf& brdf, const HalfVectorSamplerOptions& options) : options_(options) {
+HalfVectorSampler::HalfVectorSampler(const Brdf& brdf, const HalfVectorSamplerOptions& options)
+    : options_(options) {
   if (options.incidentNodes < 1 || options.phiCells < 1 || !(options.cosineFraction >= 0) ||
       !(options.cosineFraction < 1))
     throw std::invalid_argument("HalfVectorSampler: needs >= 1 node and phi cell, cosine fraction in [0, 1)");
@@ -61,10 +62,11 @@ HalfVectorSampler::HalfVectorSampler(const Brdf& brdf, const HalfVectorSamplerOp
     for (int i = 1; i < ThetaEdges; ++i) {
       for (int j = 0; j < options.phiCells; ++j) {
         const double phi = phiEdge[size_t(j)];
-        values[size_t(i) * size_t(phiEdges) + size_t(j)] =
-            target(Vec3d(sinEdge[size_t(i)] * std::cos(phi), sinEdge[size_t(i)] * std::sin(phi), cosEdge[size_t(i)]));
+        values[size_t(i) * size_t(phiEdges) + size_t(j)] = target(Vec3d(
+            sinEdge[size_t(i)] * std::cos(phi), sinEdge[size_t(i)] * std::sin(phi), cosEdge[size_t(i)]));
       }
-      values[size_t(i) * size_t(phiEdges) + size_t(options.phiCells)] = values[size_t(i) * size_t(phiEdges)];  // periodic
+      values[size_t(i) * size_t(phiEdges) + size_t(options.phiCells)] =
+          values[size_t(i) * size_t(phiEdges)];  // periodic
     }
     nodes_.emplace_back(xEdges, phiEdge, std::move(values));
   }

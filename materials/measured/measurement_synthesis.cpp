@@ -39,7 +39,8 @@ MeasurementSynthesizer::MeasurementSynthesizer(std::vector<const BsdfModel*> com
     throw std::invalid_argument("measurement perturbation: sigmas and noise floor must be finite and >= 0");
   if (perturbation.missingAboveDeg) {
     const double deg = *perturbation.missingAboveDeg;
-    if (!(deg > 0 && deg <= 90)) throw std::invalid_argument("measurement perturbation: cut-off must be in (0, 90]");
+    if (!(deg > 0 && deg <= 90))
+      throw std::invalid_argument("measurement perturbation: cut-off must be in (0, 90]");
     cosMissingAbove_ = std::cos(radians(deg));
   }
   if (perturbation.gainSigma > 0) {
@@ -51,13 +52,15 @@ MeasurementSynthesizer::MeasurementSynthesizer(std::vector<const BsdfModel*> com
 
 Rgb MeasurementSynthesizer::groundTruth(size_t cell) const {
   const merl::CellCoordinates c = merl::cellCoordinates(cell);
-  const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 0.0,
-                                               merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
+  const auto [wi, wo] =
+      directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 0.0, merl::thetaDiffAt(c.thetaDiff + 0.5),
+                             merl::phiDiffAt(c.phiDiff + 0.5));
   Rgb f(0.0);
   if (!(wi.z > 0) || !(wo.z > 0)) return f;
   for (const BsdfModel* model : components_) f += model->eval(wi, wo);
   if (!isFinite(f))
-    throw std::logic_error("measurement synthesis: a model returned a non-finite value at cell " + std::to_string(cell));
+    throw std::logic_error("measurement synthesis: a model returned a non-finite value at cell " +
+                           std::to_string(cell));
   return f;
 }
 

@@ -41,7 +41,8 @@ class MeasurementSynthesizer {
   // The ground truth is the sum of `components` (for a published fit: a Lambertian term and a
   // specular lobe). The models must outlive the synthesizer. Throws std::invalid_argument on
   // a negative sigma or floor or a cut-off outside (0, 90].
-  MeasurementSynthesizer(std::vector<const BsdfModel*> components, const MeasurementPerturbation& perturbation);
+  MeasurementSynthesizer(std::vector<const BsdfModel*> components,
+                         const MeasurementPerturbation& perturbation);
 
   // Fills every cell of theta_h cells [begin, end) of `table`; each cell depends only on its
   // index, so disjoint ranges may be filled concurrently.

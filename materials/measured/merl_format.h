@@ -27,12 +27,13 @@ inline constexpr int ThetaDiffCells = 90;
 inline constexpr int PhiDiffCells = 180;
 inline constexpr size_t CellCount = size_t(ThetaHalfCells) * ThetaDiffCells * PhiDiffCells;  // 1,458,000
 inline constexpr size_t HeaderBytes = 3 * 4;
-inline constexpr size_t FileBytes = HeaderBytes + 3 * CellCount * sizeof(double);          // 34,992,012
+inline constexpr size_t FileBytes = HeaderBytes + 3 * CellCount * sizeof(double);  // 34,992,012
 inline constexpr std::array<double, 3> ChannelScale{1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0};
 inline constexpr double MissingValue = -1.0;  // what MERL stores for a missing measurement
 
 inline constexpr size_t cellIndex(int thetaHalfCell, int thetaDiffCell, int phiDiffCell) {
-  return size_t(phiDiffCell) + size_t(PhiDiffCells) * (size_t(thetaDiffCell) + size_t(ThetaDiffCells) * size_t(thetaHalfCell));
+  return size_t(phiDiffCell) +
+         size_t(PhiDiffCells) * (size_t(thetaDiffCell) + size_t(ThetaDiffCells) * size_t(thetaHalfCell));
 }
 
 struct CellCoordinates {
@@ -47,7 +48,9 @@ inline constexpr CellCoordinates cellCoordinates(size_t index) {
 inline double thetaHalfCoordinate(double thetaHalf) {
   return std::sqrt(std::max(thetaHalf, 0.0) / PiOver2) * ThetaHalfCells;
 }
-inline double thetaDiffCoordinate(double thetaDiff) { return std::max(thetaDiff, 0.0) / PiOver2 * ThetaDiffCells; }
+inline double thetaDiffCoordinate(double thetaDiff) {
+  return std::max(thetaDiff, 0.0) / PiOver2 * ThetaDiffCells;
+}
 // phi_d in (-pi, pi], folded to [0, pi] by reciprocity.
 inline double foldPhiDiff(double phiDiff) { return phiDiff < 0 ? phiDiff + Pi : phiDiff; }
 inline double phiDiffCoordinate(double foldedPhiDiff) { return foldedPhiDiff / Pi * PhiDiffCells; }
@@ -57,9 +60,15 @@ inline double phiDiffCoordinate(double foldedPhiDiff) { return foldedPhiDiff / P
 inline int clampCell(double coordinate, int cells) {
   return coordinate < 1.0 ? 0 : std::min(int(coordinate), cells - 1);
 }
-inline int thetaHalfCell(double thetaHalf) { return clampCell(thetaHalfCoordinate(thetaHalf), ThetaHalfCells); }
-inline int thetaDiffCell(double thetaDiff) { return clampCell(thetaDiffCoordinate(thetaDiff), ThetaDiffCells); }
-inline int phiDiffCell(double phiDiff) { return clampCell(phiDiffCoordinate(foldPhiDiff(phiDiff)), PhiDiffCells); }
+inline int thetaHalfCell(double thetaHalf) {
+  return clampCell(thetaHalfCoordinate(thetaHalf), ThetaHalfCells);
+}
+inline int thetaDiffCell(double thetaDiff) {
+  return clampCell(thetaDiffCoordinate(thetaDiff), ThetaDiffCells);
+}
+inline int phiDiffCell(double phiDiff) {
+  return clampCell(phiDiffCoordinate(foldPhiDiff(phiDiff)), PhiDiffCells);
+}
 
 // Angles of a cell coordinate (the inverses of the maps above); cell i's lower edge is at
 // coordinate i, its centre at i + 0.5.

@@ -25,8 +25,8 @@ constexpr std::array<const char*, 3> ChannelNames{"red", "green", "blue"};
 }
 
 std::string expectedLayout() {
-  return "a MERL file has " + std::to_string(merl::FileBytes) + " bytes: a 12-byte header (90, 90, 180) and 3 x " +
-         std::to_string(merl::CellCount) + " float64";
+  return "a MERL file has " + std::to_string(merl::FileBytes) +
+         " bytes: a 12-byte header (90, 90, 180) and 3 x " + std::to_string(merl::CellCount) + " float64";
 }
 
 // The file is little-endian; on a big-endian host every word is byte-swapped.
@@ -79,14 +79,17 @@ MerlTable readMerl(const fs::path& path) {
   const uintmax_t size = fs::file_size(path, error);
   if (error) fail(path, "not readable (" + error.message() + ")");
   if (size < merl::HeaderBytes)
-    fail(path, "truncated: " + std::to_string(size) + " bytes, shorter than the 12-byte header; " + expectedLayout());
+    fail(path, "truncated: " + std::to_string(size) + " bytes, shorter than the 12-byte header; " +
+                   expectedLayout());
 
   std::array<int32_t, 3> header{};
-  if (!file.read(reinterpret_cast<char*>(header.data()), merl::HeaderBytes)) fail(path, "header not readable");
+  if (!file.read(reinterpret_cast<char*>(header.data()), merl::HeaderBytes))
+    fail(path, "header not readable");
   fromLittleEndian(std::span<int32_t>(header));
   if (header != Dimensions)
-    fail(path, "bad header: dimensions " + std::to_string(header[0]) + " x " + std::to_string(header[1]) + " x " +
-                   std::to_string(header[2]) + ", expected 90 x 90 x 180 (theta_h x theta_d x phi_d)");
+    fail(path, "bad header: dimensions " + std::to_string(header[0]) + " x " + std::to_string(header[1]) +
+                   " x " + std::to_string(header[2]) +
+                   ", expected 90 x 90 x 180 (theta_h x theta_d x phi_d)");
   if (size < merl::FileBytes)
     fail(path, "truncated: " + std::to_string(size) + " bytes; " + expectedLayout());
   if (size > merl::FileBytes)
@@ -109,18 +112,22 @@ void writeMerl(const fs::path& path, const MerlTable& table) {
   std::error_code error;
   if (fs::is_directory(path, error)) fail(path, "not written: is a directory");
   const fs::path directory = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  if (!fs::is_directory(directory, error)) fail(path, "not written: directory \"" + directory.string() + "\" does not exist");
+  if (!fs::is_directory(directory, error))
+    fail(path, "not written: directory \"" + directory.string() + "\" does not exist");
   try {
     writeFileAtomically(path, [&](const fs::path& temporary) {
       std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-      if (!out) fail(path, std::string("not written: cannot create a file in its directory (") + std::strerror(errno) + ")");
+      if (!out)
+        fail(path, std::string("not written: cannot create a file in its directory (") +
+                       std::strerror(errno) + ")");
       std::array<int32_t, 3> header = Dimensions;
       fromLittleEndian(std::span<int32_t>(header));  // the same swap converts to little-endian
       out.write(reinterpret_cast<const char*>(header.data()), merl::HeaderBytes);
       if constexpr (std::endian::native == std::endian::big) {
         std::vector<double> swapped(table.storedData().begin(), table.storedData().end());
         fromLittleEndian(std::span<double>(swapped));
-        out.write(reinterpret_cast<const char*>(swapped.data()), std::streamsize(swapped.size() * sizeof(double)));
+        out.write(reinterpret_cast<const char*>(swapped.data()),
+                  std::streamsize(swapped.size() * sizeof(double)));
       } else {
         const std::span<const double> stored = table.storedData();
         out.write(reinterpret_cast<const char*>(stored.data()), std::streamsize(stored.size_bytes()));

@@ -27,17 +27,25 @@ class MerlTable {
 
   // As in the file: before the channel scale, negative when missing.
   double stored(int channel, size_t cell) const { return stored_[size_t(channel) * merl::CellCount + cell]; }
-  void setStored(int channel, size_t cell, double value) { stored_[size_t(channel) * merl::CellCount + cell] = value; }
+  void setStored(int channel, size_t cell, double value) {
+    stored_[size_t(channel) * merl::CellCount + cell] = value;
+  }
   // The BRDF value in sr^-1 (meaningless for a missing cell).
-  double value(int channel, size_t cell) const { return stored(channel, cell) * merl::ChannelScale[size_t(channel)]; }
-  void setValue(int channel, size_t cell, double f) { setStored(channel, cell, f / merl::ChannelScale[size_t(channel)]); }
+  double value(int channel, size_t cell) const {
+    return stored(channel, cell) * merl::ChannelScale[size_t(channel)];
+  }
+  void setValue(int channel, size_t cell, double f) {
+    setStored(channel, cell, f / merl::ChannelScale[size_t(channel)]);
+  }
   Rgb rgb(size_t cell) const { return {value(0, cell), value(1, cell), value(2, cell)}; }
   void setRgb(size_t cell, const Rgb& f) {
     for (int c = 0; c < 3; ++c) setValue(c, cell, f[c]);
   }
 
   // A cell is missing when any channel is negative (MERL writes -1 in all three).
-  bool isMissing(size_t cell) const { return stored(0, cell) < 0 || stored(1, cell) < 0 || stored(2, cell) < 0; }
+  bool isMissing(size_t cell) const {
+    return stored(0, cell) < 0 || stored(1, cell) < 0 || stored(2, cell) < 0;
+  }
   void setMissing(size_t cell) {
     for (int c = 0; c < 3; ++c) setStored(c, cell, merl::MissingValue);
   }

@@ -77,7 +77,9 @@ class LineParser {
   std::string identifier() {
     skipSpace();
     const size_t start = pos_;
-    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_')) ++pos_;
+    while (pos_ < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_'))
+      ++pos_;
     if (pos_ == start) fail("expected a name");
     return std::string(text_.substr(start, pos_ - start));
   }
@@ -112,26 +114,38 @@ struct LobeMapping {
 
 const std::array<LobeMapping, 5>& lobeMappings() {
   static const std::array<LobeMapping, 5> mappings{{
-      {"NganCookTorrance", {"albedo", "eta", "roughness"},
+      {"NganCookTorrance",
+       {"albedo", "eta", "roughness"},
        [](const json& p) {
-         return json{{"type", "ngan-cook-torrance"}, {"albedo", p["albedo"]}, {"eta", p["eta"]}, {"roughness", p["roughness"]}};
+         return json{{"type", "ngan-cook-torrance"},
+                     {"albedo", p["albedo"]},
+                     {"eta", p["eta"]},
+                     {"roughness", p["roughness"]}};
        }},
-      {"NganWard", {"albedo", "roughness"},
-       [](const json& p) { return json{{"type", "ngan-ward"}, {"albedo", p["albedo"]}, {"roughness", p["roughness"]}}; }},
-      {"NganAshikhminShirley", {"albedo", "fresnelReflectance", "sharpness"},
+      {"NganWard",
+       {"albedo", "roughness"},
        [](const json& p) {
-         return json{{"type", "ngan-ashikhmin-shirley"}, {"albedo", p["albedo"]},
-                     {"fresnelReflectance", p["fresnelReflectance"]}, {"sharpness", p["sharpness"]}};
+         return json{{"type", "ngan-ward"}, {"albedo", p["albedo"]}, {"roughness", p["roughness"]}};
        }},
-      {"NganBlinnPhong", {"albedo", "sharpness"},
+      {"NganAshikhminShirley",
+       {"albedo", "fresnelReflectance", "sharpness"},
+       [](const json& p) {
+         return json{{"type", "ngan-ashikhmin-shirley"},
+                     {"albedo", p["albedo"]},
+                     {"fresnelReflectance", p["fresnelReflectance"]},
+                     {"sharpness", p["sharpness"]}};
+       }},
+      {"NganBlinnPhong",
+       {"albedo", "sharpness"},
        [](const json& p) {
          return json{{"type", "blinn-phong"}, {"kd", 0.0}, {"ks", p["albedo"]}, {"exponent", p["sharpness"]}};
        }},
-      {"NganLafortune", {"albedo", "Cxy", "Cz", "sharpness"},
+      {"NganLafortune",
+       {"albedo", "Cxy", "Cz", "sharpness"},
        [](const json& p) {
-         return json{{"type", "lafortune"}, {"kd", 0.0},         {"ks", p["albedo"]},
-                     {"cx", p["Cxy"]},      {"cy", p["Cxy"]},   {"cz", p["Cz"]},
-                     {"exponent", p["sharpness"]}, {"normalization", "ngan"}};
+         return json{
+             {"type", "lafortune"}, {"kd", 0.0},     {"ks", p["albedo"]},          {"cx", p["Cxy"]},
+             {"cy", p["Cxy"]},      {"cz", p["Cz"]}, {"exponent", p["sharpness"]}, {"normalization", "ngan"}};
        }},
   }};
   return mappings;
@@ -172,7 +186,8 @@ std::vector<std::string> publishedFitModels() {
 
 std::vector<json> PublishedFit::components() const {
   const LobeMapping* mapping = findMapping(lobeModel);
-  if (!mapping) throw MaterialError("published fit \"" + name + "\": unknown lobe model \"" + lobeModel + "\"");
+  if (!mapping)
+    throw MaterialError("published fit \"" + name + "\": unknown lobe model \"" + lobeModel + "\"");
   return {json{{"type", "lambertian"}, {"albedo", {diffuseAlbedo.x, diffuseAlbedo.y, diffuseAlbedo.z}}},
           mapping->material(lobeParameters)};
 }
@@ -194,7 +209,8 @@ PublishedFit parsePublishedFitLine(const std::string& line) {
     throw MaterialError("expected Aggregate(Lambertian(...), <lobe>(...)) after the name");
   const Call& diffuse = aggregate.calls[0];
   const Call& lobe = aggregate.calls[1];
-  if (diffuse.name != "Lambertian") throw MaterialError("the first term of Aggregate must be Lambertian(albedo = [r, g, b])");
+  if (diffuse.name != "Lambertian")
+    throw MaterialError("the first term of Aggregate must be Lambertian(albedo = [r, g, b])");
   checkArguments(diffuse, {"albedo"}, parser);
   const json& albedo = diffuse.arguments["albedo"];
   fit.diffuseAlbedo = Rgb(albedo[0].get<double>(), albedo[1].get<double>(), albedo[2].get<double>());

@@ -1,7 +1,8 @@
 // The published fits of the MERL materials (Ngan, Durand & Matusik 2005, "Experimental
 // Analysis of BRDF Models", EGSR), one line per material as collected by the bsdfbenchmark
 // project (data/published-fits/README.md):
-//   name = Aggregate(Lambertian(albedo = [r, g, b]), NganCookTorrance(albedo = [...], eta = x, roughness = y))
+//   name = Aggregate(Lambertian(albedo = [r, g, b]), NganCookTorrance(albedo = [...], eta = x, roughness =
+//   y))
 // Each line becomes the registry materials whose sum it is: a Lambertian term and the lobe.
 // The lobe's scatterlab type takes the fit's parameters under the same names where it can
 // (ngan-cook-torrance, ngan-ward, ngan-ashikhmin-shirley); NganBlinnPhong maps to blinn-phong

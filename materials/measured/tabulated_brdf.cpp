@@ -87,10 +87,12 @@ TabulatedBrdf::FilledGrid TabulatedBrdf::fill(const MerlTable& table) {
   // Along theta_d within each (theta_h, phi_d) column, then along theta_h within each
   // (theta_d, phi_d) row for the columns that had nothing usable.
   for (int th = 0; th < ThetaHalfCells; ++th)
-    for (int pd = 0; pd < PhiDiffCells; ++pd) fillAlongLine(source, merl::cellIndex(th, 0, pd), PhiDiffCells, ThetaDiffCells);
+    for (int pd = 0; pd < PhiDiffCells; ++pd)
+      fillAlongLine(source, merl::cellIndex(th, 0, pd), PhiDiffCells, ThetaDiffCells);
   for (int td = 0; td < ThetaDiffCells; ++td)
     for (int pd = 0; pd < PhiDiffCells; ++pd)
-      fillAlongLine(source, merl::cellIndex(0, td, pd), size_t(PhiDiffCells) * ThetaDiffCells, ThetaHalfCells);
+      fillAlongLine(source, merl::cellIndex(0, td, pd), size_t(PhiDiffCells) * ThetaDiffCells,
+                    ThetaHalfCells);
 
   grid.values.resize(merl::CellCount);
   for (size_t cell = 0; cell < merl::CellCount; ++cell) {
@@ -135,7 +137,8 @@ Rgb TabulatedBrdf::interpolate(const HalfDiff& angles) const {
   return result;
 }
 
-std::optional<BsdfSample> TabulatedBrdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const {
+std::optional<BsdfSample> TabulatedBrdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                                TransportMode) const {
   const std::optional<Vec3d> wo = sampler_.sample(wi, uLobe, u);
   if (!wo) return std::nullopt;
   // pdf() recomputed from (wi, wo): sample() and pdf() agree to the last bit.

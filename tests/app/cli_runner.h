@@ -32,7 +32,8 @@ inline fs::path testOutputDir() {
 // tests in parallel), and that does not exist yet.
 inline fs::path uniquePath(const std::string& stem) {
   static std::atomic<int> counter{0};
-  const fs::path path = testOutputDir() / (stem + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+  const fs::path path =
+      testOutputDir() / (stem + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
   fs::remove_all(path);
   return path;
 }
@@ -56,8 +57,10 @@ inline ProcessResult runScatterlab(const std::vector<std::string>& args) {
   const fs::path outPath = uniquePath("stdout"), errPath = uniquePath("stderr");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   std::vector<std::string> argvStrings{SCATTERLAB_EXE};
   argvStrings.insert(argvStrings.end(), args.begin(), args.end());
   std::vector<char*> argv;

@@ -96,7 +96,8 @@ TEST_P(CliBadInputTest, ExitsTwoWithOneMessageAndWritesNothing) {
   EXPECT_TRUE(run.out.empty()) << describe(run);
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << "one line:\n" << run.err;
   for (const std::string& fragment : bad.messageContains)
-    EXPECT_NE(run.err.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from:\n" << run.err;
+    EXPECT_NE(run.err.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from:\n"
+                                                         << run.err;
   EXPECT_FALSE(fs::exists(images)) << "--images directory created on bad input";
 }
 
@@ -109,7 +110,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"nan_roughness",
                  {"check", R"({"type":"conductor","alpha":NaN})"},
                  {"\"alpha\"", "NaN", "inline JSON", "line 1"}},
-        BadInput{"malformed_json", {"check", R"({"type":"conductor",)"}, {"inline JSON", "line 1, column 21"}},
+        BadInput{
+            "malformed_json", {"check", R"({"type":"conductor",)"}, {"inline JSON", "line 1, column 21"}},
         BadInput{"unknown_model",
                  {"check", R"({"type":"plastic"})"},
                  {"\"type\"", "\"plastic\"", "\"lambertian\"", "\"conductor\""}},
@@ -129,15 +131,20 @@ INSTANTIATE_TEST_SUITE_P(
                  {"check", R"({"type":"lambertian"})", R"({"type":"lambertian","albedo":2})"},
                  {"\"albedo\"", "2", "[0, 1]"}},
         BadInput{"nested_material_bad",
-                 {"check", R"({"type":"blend","materials":[{"type":"lambertian"},{"type":"conductor","alpha":2}]})"},
+                 {"check",
+                  R"({"type":"blend","materials":[{"type":"lambertian"},{"type":"conductor","alpha":2}]})"},
                  {"material key \"materials[1].alpha\"", "2", "[0.001, 1]"}},
         BadInput{"missing_file", {"check", "no-such-material.json"}, {"no-such-material.json", "not found"}},
         BadInput{"grid_without_x", {"check", "--grid", "64"}, {"--grid", "\"64\"", "COSxPHI"}},
         BadInput{"grid_too_small", {"check", "--grid", "1x128"}, {"--grid", "\"1x128\"", "[2, 4096]"}},
         BadInput{"incident_angle_90", {"check", "--wi-theta", "0,90"}, {"--wi-theta", "\"90\"", "[0, 90)"}},
-        BadInput{"incident_angle_not_a_number", {"check", "--wi-theta", "0,abc"}, {"--wi-theta", "\"abc\"", "[0, 90)"}},
-        BadInput{"negative_samples", {"check", "--samples", "-5"}, {"--samples", "\"-5\"", "integer in [1000"}},
-        BadInput{"too_few_samples", {"check", "--samples", "10"}, {"--samples", "\"10\"", "integer in [1000"}},
+        BadInput{"incident_angle_not_a_number",
+                 {"check", "--wi-theta", "0,abc"},
+                 {"--wi-theta", "\"abc\"", "[0, 90)"}},
+        BadInput{
+            "negative_samples", {"check", "--samples", "-5"}, {"--samples", "\"-5\"", "integer in [1000"}},
+        BadInput{
+            "too_few_samples", {"check", "--samples", "10"}, {"--samples", "\"10\"", "integer in [1000"}},
         BadInput{"significance_zero", {"check", "--alpha", "0"}, {"--alpha", "\"0\"", "(0, 0.5]"}},
         BadInput{"azimuth_nan", {"check", "--wi-phi", "nan"}, {"--wi-phi", "\"nan\"", "finite"}},
         BadInput{"seed_negative", {"check", "--seed", "-1"}, {"--seed", "\"-1\"", "integer >= 0"}},
@@ -158,8 +165,8 @@ TEST(Cli, ImagesPathThatIsAFileIsBadInput) {
 // ---- Checks that run -----------------------------------------------------------------------
 
 TEST(Cli, QuickLambertianCheckPassesWithJson) {
-  const ProcessResult run = runScatterlab(std::vector<std::string>{"check", R"({"type":"lambertian"})"} + QuickCheck +
-                                std::vector<std::string>{"--json"});
+  const ProcessResult run = runScatterlab(std::vector<std::string>{"check", R"({"type":"lambertian"})"} +
+                                          QuickCheck + std::vector<std::string>{"--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   EXPECT_TRUE(run.err.empty()) << "progress must be quiet when stderr is not a terminal:\n" << run.err;
   const json document = json::parse(run.out);
@@ -189,7 +196,7 @@ TEST(Cli, MaterialFileIsAccepted) {
   const fs::path file = uniquePath("copper.json");
   std::ofstream(file) << R"({"type": "conductor", "distribution": "beckmann", "alpha": 0.3, "metal": "Cu"})";
   const ProcessResult run = runScatterlab(std::vector<std::string>{"check", file.string()} + QuickCheck +
-                                std::vector<std::string>{"--json"});
+                                          std::vector<std::string>{"--json"});
   EXPECT_LE(run.exitCode, 1) << describe(run);
   const json document = json::parse(run.out);
   EXPECT_EQ(document.at("materials").at(0).at("label"), file.string());
@@ -198,8 +205,8 @@ TEST(Cli, MaterialFileIsAccepted) {
 }
 
 TEST(Cli, GrazingIncidenceOnAConductorGivesNoNaN) {
-  const ProcessResult run = runScatterlab({"check", R"({"type":"conductor"})", "--samples", "20000", "--grid", "16x32",
-                                 "--wi-theta", "89.9", "--json"});
+  const ProcessResult run = runScatterlab({"check", R"({"type":"conductor"})", "--samples", "20000", "--grid",
+                                           "16x32", "--wi-theta", "89.9", "--json"});
   ASSERT_LE(run.exitCode, 1) << describe(run);
   const json document = json::parse(run.out);
   for (const json& row : document.at("report").at("rows")) {
@@ -213,8 +220,9 @@ TEST(Cli, GrazingIncidenceOnAConductorGivesNoNaN) {
 
 TEST(Cli, ImagesAreWrittenOnRequest) {
   const fs::path images = uniquePath("images");
-  const ProcessResult run = runScatterlab(std::vector<std::string>{"check", R"({"type":"lambertian"})", "--images",
-                                                         images.string()} + QuickCheck);
+  const ProcessResult run = runScatterlab(
+      std::vector<std::string>{"check", R"({"type":"lambertian"})", "--images", images.string()} +
+      QuickCheck);
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   int pngs = 0;
   for (const auto& entry : fs::directory_iterator(images)) pngs += entry.path().extension() == ".png";

@@ -20,9 +20,8 @@ namespace fs = std::filesystem;
 using namespace cli_runner;
 
 // lambertian 0.2 + Cook-Torrance (albedo 0.2, F0 0.3, roughness 0.1), as one registry material.
-const std::string Truth =
-    R"({"type":"blend","weight":0.5,"materials":[{"type":"lambertian","albedo":0.4},)"
-    R"({"type":"ngan-cook-torrance","albedo":0.4,"eta":0.3,"roughness":0.1}]})";
+const std::string Truth = R"({"type":"blend","weight":0.5,"materials":[{"type":"lambertian","albedo":0.4},)"
+                          R"({"type":"ngan-cook-torrance","albedo":0.4,"eta":0.3,"roughness":0.1}]})";
 const std::vector<std::string> Quick{"--samples", "20000", "--grid-points", "64", "--starts", "2"};
 
 double parameter(const json& report, const std::string& name) {
@@ -45,12 +44,13 @@ TEST(FitCli, HelpListsEveryOption) {
 
 TEST(FitCli, GoodFitIsPrintedAndWrittenAsARegistryMaterial) {
   const fs::path out = uniquePath("fit") += ".json";
-  const ProcessResult run = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
-                                                                   "--metric", "ngan", "--out", out.string()} +
-                                          Quick);
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
+                                             "--metric", "ngan", "--out", out.string()} +
+                    Quick);
   ASSERT_EQ(run.exitCode, 0) << describe(run);
-  expectMentions(run.out, {"ngan-cook-torrance.roughness", "std dev", "sigma^2", "relative error", "iterations",
-                           "CONVERGENCE", "verdict: GOOD", "wrote " + out.string()});
+  expectMentions(run.out, {"ngan-cook-torrance.roughness", "std dev", "sigma^2", "relative error",
+                           "iterations", "CONVERGENCE", "verdict: GOOD", "wrote " + out.string()});
   const json material = json::parse(readFile(out));
   EXPECT_NO_THROW(makeBsdf(material));
   EXPECT_EQ(material, completeMaterial(material));  // written complete
@@ -62,9 +62,10 @@ TEST(FitCli, GoodFitIsPrintedAndWrittenAsARegistryMaterial) {
 }
 
 TEST(FitCli, JsonReportHoldsTheParametersTheMaterialAndTheVerdict) {
-  const ProcessResult run = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
-                                                                   "--metric", "low-log", "--json"} +
-                                          Quick);
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
+                                             "--metric", "low-log", "--json"} +
+                    Quick);
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(run.out);
   EXPECT_EQ(report.at("verdict"), "good");
@@ -80,9 +81,10 @@ TEST(FitCli, JsonReportHoldsTheParametersTheMaterialAndTheVerdict) {
 
 TEST(FitCli, SameResultForAnyThreadCount) {
   const auto fitWith = [&](const std::string& threads) {
-    const ProcessResult run = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+conductor",
-                                                                     "--metric", "cube-root", "--json", "--threads", threads} +
-                                            Quick);
+    const ProcessResult run =
+        runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+conductor", "--metric",
+                                               "cube-root", "--json", "--threads", threads} +
+                      Quick);
     EXPECT_EQ(run.exitCode, 0) << describe(run);
     return json::parse(run.out).at("fit").at("parameters");
   };
@@ -92,13 +94,14 @@ TEST(FitCli, SameResultForAnyThreadCount) {
 // A measured-style MERL file with noise and missing grazing cells.
 TEST(FitCli, FitsANoisyMerlFileWithMissingCells) {
   const fs::path table = uniquePath("bronze") += ".binary";
-  const ProcessResult synth = runScatterlab({"synth", "--fit", fitFile().string(), "--name", "alum-bronze", "--out",
-                                             table.string(), "--log-noise", "0.05", "--missing-above", "80"});
+  const ProcessResult synth =
+      runScatterlab({"synth", "--fit", fitFile().string(), "--name", "alum-bronze", "--out", table.string(),
+                     "--log-noise", "0.05", "--missing-above", "80"});
   ASSERT_EQ(synth.exitCode, 0) << describe(synth);
-  const ProcessResult run = runScatterlab(
-      std::vector<std::string>{"fit", table.string(), "--model", "lambertian+ngan-cook-torrance", "--metric", "ngan",
-                               "--json"} +
-      Quick);
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"fit", table.string(), "--model",
+                                             "lambertian+ngan-cook-torrance", "--metric", "ngan", "--json"} +
+                    Quick);
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(run.out);
   EXPECT_GT(report.at("data").at("missing_cells").get<size_t>(), 100000u);
@@ -112,17 +115,19 @@ TEST(FitCli, PoorFitIsReportedAndNotWritten) {
   const fs::path out = uniquePath("poor") += ".json";
   // A Lambertian cannot reproduce a highlight: its relative error (1.0) is far above the
   // default 0.7.
-  const ProcessResult lambertian = runScatterlab(
-      std::vector<std::string>{"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", out.string()} + Quick);
+  const ProcessResult lambertian =
+      runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian", "--metric", "ngan",
+                                             "--out", out.string()} +
+                    Quick);
   EXPECT_EQ(lambertian.exitCode, 1) << describe(lambertian);
-  expectMentions(lambertian.out, {"verdict: POOR", "relative error of channel", "exceeds --max-relative-error",
-                                  "not written"});
+  expectMentions(lambertian.out, {"verdict: POOR", "relative error of channel",
+                                  "exceeds --max-relative-error", "not written"});
   EXPECT_FALSE(fs::exists(out));
   // One iteration: Ceres stops before converging, and says so.
-  const ProcessResult stopped = runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance",
-                                                                       "--metric", "ngan", "--max-iterations", "1",
-                                                                       "--out", out.string()} +
-                                              Quick);
+  const ProcessResult stopped = runScatterlab(
+      std::vector<std::string>{"fit", Truth, "--model", "lambertian+ngan-cook-torrance", "--metric", "ngan",
+                               "--max-iterations", "1", "--out", out.string()} +
+      Quick);
   EXPECT_EQ(stopped.exitCode, 1) << describe(stopped);
   expectMentions(stopped.out, {"verdict: POOR", "did not converge: NO_CONVERGENCE", "iterations"});
   EXPECT_FALSE(fs::exists(out));
@@ -132,12 +137,14 @@ TEST(FitCli, PoorFitIsReportedAndNotWritten) {
 // is exact but the sum has no registry form.
 TEST(FitCli, SumWithoutARegistryFormIsPoor) {
   const fs::path table = uniquePath("maple") += ".binary";
-  ASSERT_EQ(runScatterlab({"synth", "--fit", fitFile().string(), "--name", "colonial-maple-223", "--out", table.string()})
+  ASSERT_EQ(runScatterlab({"synth", "--fit", fitFile().string(), "--name", "colonial-maple-223", "--out",
+                           table.string()})
                 .exitCode,
             0);
-  const ProcessResult run = runScatterlab(
-      std::vector<std::string>{"fit", table.string(), "--model", "lambertian+ngan-cook-torrance", "--metric", "ngan"} +
-      Quick);
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"fit", table.string(), "--model",
+                                             "lambertian+ngan-cook-torrance", "--metric", "ngan"} +
+                    Quick);
   EXPECT_EQ(run.exitCode, 1) << describe(run);
   expectMentions(run.out, {"verdict: POOR", "no registry material", "channel r"});
   fs::remove(table);
@@ -153,19 +160,23 @@ TEST(FitCli, BadInputNamesTheOptionFileOrValueAndWritesNothing) {
                  {"--model", "\"dielectric\" cannot be fitted", "delta"});
   expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "l1"},
                  {"--metric", "\"l1\" is not a metric", "\"low-log\""});
-  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--robust", "tukey"},
-                 {"--robust", "\"tukey\" is not a robust loss", "\"cauchy\""});
+  expectBadInput(
+      fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--robust", "tukey"},
+      {"--robust", "\"tukey\" is not a robust loss", "\"cauchy\""});
   expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--lobes", "4"},
                  {"--lobes", "out of range", "[1, 3]"});
-  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--robust-scale", "0.1"},
-                 {"--robust-scale", "--robust"});
+  expectBadInput(
+      fit + std::vector<std::string>{"--model", "lambertian", "--metric", "ngan", "--robust-scale", "0.1"},
+      {"--robust-scale", "--robust"});
   expectBadInput({"fit", Truth, "--model", "lambertian"}, {"--metric", "required"});
-  expectBadInput({"fit", (testOutputDir() / "absent.binary").string(), "--model", "lambertian", "--metric", "ngan"},
-                 {"absent.binary", "not found", "allowed"});
+  expectBadInput(
+      {"fit", (testOutputDir() / "absent.binary").string(), "--model", "lambertian", "--metric", "ngan"},
+      {"absent.binary", "not found", "allowed"});
   expectBadInput({"fit", R"({"type":"lambertian","albedo":2})", "--model", "lambertian", "--metric", "ngan"},
                  {"albedo", "out of range"});
-  expectBadInput({"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", (out / "sub" / "x.json").string()},
-                 {"--out", "does not exist"});
+  expectBadInput(
+      {"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", (out / "sub" / "x.json").string()},
+      {"--out", "does not exist"});
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -19,8 +19,9 @@ TEST(GenerateTable, CommittedWhiteAlbedoTableIsTheGeneratorsOutput) {
       fs::path(SCATTERLAB_DATA_DIR).parent_path() / "materials/bsdf/tables/white_microfacet_albedo_table.cpp";
   const std::vector<double> ggx(GgxWhiteAlbedoTable.begin(), GgxWhiteAlbedoTable.end());
   const std::vector<double> beckmann(BeckmannWhiteAlbedoTable.begin(), BeckmannWhiteAlbedoTable.end());
-  const std::string command = "scatterlab generate-table white-microfacet-albedo --output "
-                              "materials/bsdf/tables/white_microfacet_albedo_table.cpp";
+  const std::string command =
+      "scatterlab generate-table white-microfacet-albedo --output "
+      "materials/bsdf/tables/white_microfacet_albedo_table.cpp";
   EXPECT_EQ(readFile(committed), whiteAlbedoTableSource(ggx, beckmann, command));
 }
 
@@ -31,8 +32,8 @@ TEST(GenerateTable, IsHiddenAndRejectsBadInput) {
   const ProcessResult unknown = runScatterlab({"generate-table", "no-such-table", "--output", "x.cpp"});
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.err.find("white-microfacet-albedo"), std::string::npos) << unknown.err;
-  const ProcessResult noDirectory = runScatterlab(
-      {"generate-table", "white-microfacet-albedo", "--output", (uniquePath("missing") / "table.cpp").string()});
+  const ProcessResult noDirectory = runScatterlab({"generate-table", "white-microfacet-albedo", "--output",
+                                                   (uniquePath("missing") / "table.cpp").string()});
   EXPECT_EQ(noDirectory.exitCode, 2);
   EXPECT_NE(noDirectory.err.find("does not exist"), std::string::npos) << noDirectory.err;
 }

@@ -32,7 +32,8 @@ TEST(LabCli, HelpListsEveryOption) {
 
 TEST(LabCli, AFailingMaterialGetsAReportThatShowsTheFailure) {
   const fs::path out = uniquePath("lab-failing");
-  const ProcessResult run = runScatterlab({"lab", WhiteRoughDisney, "--quick", "--out", out.string(), "--json"});
+  const ProcessResult run =
+      runScatterlab({"lab", WhiteRoughDisney, "--quick", "--out", out.string(), "--json"});
   ASSERT_EQ(run.exitCode, 1) << describe(run);
   const json summary = json::parse(run.out);
   EXPECT_FALSE(summary["passed"].get<bool>());
@@ -56,7 +57,8 @@ TEST(LabCli, AFailingMaterialGetsAReportThatShowsTheFailure) {
 
 TEST(LabCli, ASecondReportReplacesTheFirstWhole) {
   const fs::path out = uniquePath("lab-replace");
-  const std::vector<std::string> lambertian{"lab", R"({"type": "lambertian"})", "--quick", "--out", out.string()};
+  const std::vector<std::string> lambertian{"lab", R"({"type": "lambertian"})", "--quick", "--out",
+                                            out.string()};
   ASSERT_EQ(runScatterlab(lambertian).exitCode, 0);
   std::ofstream(out / "left-over.txt") << "from before";
   const ProcessResult run = runScatterlab(lambertian);
@@ -80,8 +82,10 @@ TEST(LabCli, BadInputLeavesTheOutputDirectoryAlone) {
   fs::create_directories(inputs);
   std::ofstream(inputs / "short.binary") << "garbage";
   std::ofstream(inputs / "broken.json") << "{not json";
-  expectBadInput({"lab", (inputs / "short.binary").string(), "--out", out.string()}, {"short.binary", "truncated"});
-  expectBadInput({"lab", (inputs / "broken.json").string(), "--out", out.string()}, {"broken.json", "line 1"});
+  expectBadInput({"lab", (inputs / "short.binary").string(), "--out", out.string()},
+                 {"short.binary", "truncated"});
+  expectBadInput({"lab", (inputs / "broken.json").string(), "--out", out.string()},
+                 {"broken.json", "line 1"});
   EXPECT_FALSE(fs::exists(out));
 
   fs::create_directories(out);
@@ -95,9 +99,11 @@ TEST(LabCli, BadInputLeavesTheOutputDirectoryAlone) {
 
 TEST(LabCli, AnUnreadableEnvironmentMapIsBadInputAndTheLastReportStays) {
   const fs::path out = uniquePath("lab-bad-env");
-  const std::vector<std::string> lambertian{"lab", R"({"type": "lambertian"})", "--quick", "--out", out.string()};
+  const std::vector<std::string> lambertian{"lab", R"({"type": "lambertian"})", "--quick", "--out",
+                                            out.string()};
   const fs::path missing = uniquePath("lab-bad-env-missing") / "studio.exr";
-  expectBadInput(lambertian + std::vector<std::string>{"--env", missing.string()}, {"--env", missing.string()});
+  expectBadInput(lambertian + std::vector<std::string>{"--env", missing.string()},
+                 {"--env", missing.string()});
   EXPECT_FALSE(fs::exists(out));
 
   ASSERT_EQ(runScatterlab(lambertian).exitCode, 0);
@@ -122,13 +128,14 @@ TEST(LabCli, EveryMaterialGoesToTheRenderer) {
   const fs::path out = uniquePath("lab-renders");
   // One map (a material after --env is a material, not a second map).
   const std::string studio = std::string(SCATTERLAB_DATA_DIR) + "/envmaps/studio.exr";
-  const ProcessResult run = runScatterlab(
-      {"lab", "--env", studio, R"({"type": "lambertian"})", subsurface.dump(), "--quick", "--out", out.string()});
+  const ProcessResult run = runScatterlab({"lab", "--env", studio, R"({"type": "lambertian"})",
+                                           subsurface.dump(), "--quick", "--out", out.string()});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(readFile(out / "report.json"));
   ASSERT_EQ(report["materials"].size(), 2u);
   const auto rendersOf = [&](size_t i) {
-    return json::parse(readFile(out / report["materials"][i]["data"].get<std::string>()))["sections"]["renders"]["data"];
+    return json::parse(
+        readFile(out / report["materials"][i]["data"].get<std::string>()))["sections"]["renders"]["data"];
   };
   const json lambertian = rendersOf(0);
   EXPECT_EQ(lambertian["renders"].size(), 1u);

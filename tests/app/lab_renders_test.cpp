@@ -39,7 +39,8 @@ std::vector<LabEnvironment> furnace() {
 }
 
 LabMaterial lambertian(double albedo) {
-  LabMaterial m = describedLabMaterial("grey", {{"type", "lambertian"}, {"albedo", {albedo, albedo, albedo}}});
+  LabMaterial m =
+      describedLabMaterial("grey", {{"type", "lambertian"}, {"albedo", {albedo, albedo, albedo}}});
   m.folder = "grey";
   return m;
 }
@@ -53,8 +54,9 @@ fs::path freshDir(const std::string& stem) {
 // The integrator's own sphere, for any description, as a Lambertian of albedo 0.5: a renderer
 // that can render everything.
 Scene acceptEverything(const json&, const Environment& environment, int size) {
-  return makeMaterialScene(ScenePreset::MaterialSphere, json{{"type", "lambertian"}, {"albedo", {0.5, 0.5, 0.5}}},
-                           environment, size, size);
+  return makeMaterialScene(ScenePreset::MaterialSphere,
+                           json{{"type", "lambertian"}, {"albedo", {0.5, 0.5, 0.5}}}, environment, size,
+                           size);
 }
 
 TEST(LabRenders, AMaterialTheRendererRefusesShowsTheRenderersMessage) {
@@ -62,7 +64,8 @@ TEST(LabRenders, AMaterialTheRendererRefusesShowsTheRenderersMessage) {
   const SphereSceneFactory refuse = [](const json&, const Environment&, int) -> Scene {
     throw MaterialError("this renderer renders nothing (test)");
   };
-  const ReportSection section = rendersSection(lambertian(0.5), nullptr, tinyRenders(), furnace(), dir, {}, refuse);
+  const ReportSection section =
+      rendersSection(lambertian(0.5), nullptr, tinyRenders(), furnace(), dir, {}, refuse);
   EXPECT_EQ(renderRefusal(section), "this renderer renders nothing (test)");
   ASSERT_EQ(section.data["refused"].size(), 1u);
   EXPECT_TRUE(section.data["renders"].empty());
@@ -77,11 +80,13 @@ TEST(LabRenders, ADescriptionOfAnyTypeIsRenderedWhenTheRendererAcceptsIt) {
   const fs::path dir = freshDir("lab-renders-any-type");
   LabMaterial skin = describedLabMaterial("skin", {{"type", "subsurface"}});
   skin.folder = "skin";
-  const ReportSection section = rendersSection(skin, nullptr, tinyRenders(), furnace(), dir, {}, acceptEverything);
+  const ReportSection section =
+      rendersSection(skin, nullptr, tinyRenders(), furnace(), dir, {}, acceptEverything);
   EXPECT_EQ(renderRefusal(section), "");
   ASSERT_EQ(section.data["renders"].size(), 1u);
   // Albedo 0.5 under radiance 1: exactly 0.5 on the sphere (float pixels).
-  for (const json& channel : section.data["renders"][0]["sphere_mean_rgb"]) EXPECT_NEAR(channel.get<double>(), 0.5, 1e-6);
+  for (const json& channel : section.data["renders"][0]["sphere_mean_rgb"])
+    EXPECT_NEAR(channel.get<double>(), 0.5, 1e-6);
   EXPECT_TRUE(fs::exists(dir / "render_furnace_material.png"));
   EXPECT_TRUE(fs::exists(dir / "render_furnace_material.exr"));
 }
@@ -98,7 +103,8 @@ TEST(LabRenders, TheIntegratorsSphereSceneRefusesWhatTheRegistryCannotMakeABsdfO
   ASSERT_FALSE(registryMessage.empty());
   LabMaterial m = lambertian(0.5);
   m.description = notABsdf;
-  const ReportSection section = rendersSection(m, nullptr, tinyRenders(), furnace(), freshDir("lab-renders-registry"), {});
+  const ReportSection section =
+      rendersSection(m, nullptr, tinyRenders(), furnace(), freshDir("lab-renders-registry"), {});
   EXPECT_EQ(renderRefusal(section), registryMessage);
 }
 
@@ -113,7 +119,8 @@ TEST(LabRenders, FitsAreRenderedBesideTheMaterialWithTheirDifference) {
   fits.families[0].name = "same";
   fits.families[0].written.material = material.description;
   fits.families[1].name = "darker";
-  fits.families[1].written.material = completeMaterial({{"type", "lambertian"}, {"albedo", {0.25, 0.25, 0.25}}});
+  fits.families[1].written.material =
+      completeMaterial({{"type", "lambertian"}, {"albedo", {0.25, 0.25, 0.25}}});
   fits.families[2].name = "unwritten";
   fits.families[2].written.problem = "the fit did not converge (test)";
   const ReportSection section = rendersSection(material, &fits, tinyRenders(), furnace(), dir, {});
@@ -121,12 +128,14 @@ TEST(LabRenders, FitsAreRenderedBesideTheMaterialWithTheirDifference) {
   ASSERT_EQ(section.data["differences"].size(), 2u);
   const json& same = section.data["differences"][0];
   EXPECT_EQ(same["relative_mean_abs_difference"].get<double>(), 0.0);
-  EXPECT_NEAR(same["relative_rms_noise"].get<double>(), 0.0, 1e-6);  // a variance of equal floats: rounding only
+  EXPECT_NEAR(same["relative_rms_noise"].get<double>(), 0.0,
+              1e-6);  // a variance of equal floats: rounding only
   const json& darker = section.data["differences"][1];
   EXPECT_NEAR(darker["relative_mean_abs_difference"].get<double>(), 0.5, 1e-6);
   EXPECT_NEAR(darker["relative_rms_difference"].get<double>(), 0.5, 1e-6);
   EXPECT_NEAR(darker["relative_rms_noise"].get<double>(), 0.0, 1e-6);
-  for (const char* file : {"render_furnace_fit2.png", "difference_furnace_fit2.png", "difference_furnace_fit2.exr"})
+  for (const char* file :
+       {"render_furnace_fit2.png", "difference_furnace_fit2.png", "difference_furnace_fit2.exr"})
     EXPECT_TRUE(fs::exists(dir / file)) << file;
   ASSERT_EQ(section.data["refused"].size(), 1u);
   EXPECT_EQ(section.data["refused"][0]["message"], "the fit did not converge (test)");

@@ -46,7 +46,8 @@ TEST(LobeCurves, TransmissionCoversTheWholeCircle) {
   // Refraction at eta 1.5: sin 30 = 1.5 sin t' puts the transmitted peak near 180 - 19.5 degrees.
   size_t peak = 0;
   for (size_t k = 0; k < curve.value.size(); ++k)
-    if (std::abs(curve.thetaOutDeg[k]) > 90 && rec709Luminance(curve.value[k]) > rec709Luminance(curve.value[peak]))
+    if (std::abs(curve.thetaOutDeg[k]) > 90 &&
+        rec709Luminance(curve.value[k]) > rec709Luminance(curve.value[peak]))
       peak = k;
   EXPECT_NEAR(curve.thetaOutDeg[peak], 180.0 - std::asin(0.5 / 1.5) * 180.0 / Pi, 2.0);
 }
@@ -93,7 +94,8 @@ TEST(MeasuredSlice, HoldsTheTablesCellsAtTheChosenPhiDiff) {
   for (int h = 0; h < merl::ThetaHalfCells; ++h) {
     for (int d = 0; d < merl::ThetaDiffCells; ++d) {
       if (h == 3 && d == 4) continue;
-      EXPECT_EQ(slice.stateAt(h, d) == CellState::Unreachable, !isReachableCell(merl::cellIndex(h, d, 90))) << h << " " << d;
+      EXPECT_EQ(slice.stateAt(h, d) == CellState::Unreachable, !isReachableCell(merl::cellIndex(h, d, 90)))
+          << h << " " << d;
     }
   }
   EXPECT_EQ(slice.stateAt(10, 20), CellState::Measured);
@@ -131,7 +133,9 @@ TEST(MeasuredSlice, ImageHasCellPixelsPerCellAndTheBrightestCellsScale) {
   unsigned char header[24];
   file.read(reinterpret_cast<char*>(header), sizeof header);
   ASSERT_TRUE(file.good());
-  const auto be32 = [&](int at) { return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3]; };
+  const auto be32 = [&](int at) {
+    return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3];
+  };
   EXPECT_EQ(be32(16), 180);
   EXPECT_EQ(be32(20), 180);
 }

@@ -41,7 +41,12 @@ TEST(Chart, LeavesOutPointsItCannotDraw) {
   Chart chart;
   chart.id = "c";
   chart.logY = true;
-  chart.series.push_back({"data", "#000000", SeriesStyle::Points, {{1, 2}, {2, NAN}, {3, 0}, {4, -1}, {INFINITY, 1}, {5, 3}}, {}, {}});
+  chart.series.push_back({"data",
+                          "#000000",
+                          SeriesStyle::Points,
+                          {{1, 2}, {2, NAN}, {3, 0}, {4, -1}, {INFINITY, 1}, {5, 3}},
+                          {},
+                          {}});
   chart.series.push_back({"guide", "#999999", SeriesStyle::Guide, {{0, 1}, {5, 1}}, {}, {}});
   EXPECT_EQ(chart.dataPointCount(), 2u);  // guides are not data
   const json j = chart.toJson();
@@ -120,7 +125,8 @@ TEST(ReportPage, SummaryRowPerMaterialAndFailuresMarked) {
   // The chart data holds each chart, and its canvas is in the page.
   const std::smatch match = [&] {
     std::smatch m;
-    std::regex_search(page, m, std::regex(R"(<script id="chart-data" type="application/json">([^<]*)</script>)"));
+    std::regex_search(page, m,
+                      std::regex(R"(<script id="chart-data" type="application/json">([^<]*)</script>)"));
     return m;
   }();
   ASSERT_EQ(match.size(), 2u);

@@ -68,8 +68,7 @@ TEST(StagedDirectory, WithoutACommitTheTargetIsUntouched) {
     StagedDirectory staged(target, Marker, Generator, "--out");
     writeFile(staged.path() / "index.html", "half");
     throw std::runtime_error("the report failed half-way");
-  } catch (const std::runtime_error&) {
-  }
+  } catch (const std::runtime_error&) {}
   EXPECT_EQ(readFile(target / "index.html"), "old");
   EXPECT_EQ(leftovers(target), 0u);  // the staging directory is removed
 }

@@ -19,13 +19,14 @@ using namespace cli_runner;
 TEST(ProfileCli, HelpListsEveryOption) {
   const ProcessResult run = runScatterlab({"profile", "--help"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
-  for (const char* option : {"--reference", "--albedo", "--eta", "--g", "--paths", "--min-radius", "--max-radius",
-                             "--bins", "--seed", "--threads", "--compare", "--json"})
+  for (const char* option : {"--reference", "--albedo", "--eta", "--g", "--paths", "--min-radius",
+                             "--max-radius", "--bins", "--seed", "--threads", "--compare", "--json"})
     EXPECT_NE(run.out.find(option), std::string::npos) << option;
 }
 
 TEST(ProfileCli, PrintsTheProfileAndJensensReflectance) {
-  const ProcessResult run = runScatterlab({"profile", R"({"type": "subsurface", "profile": "dipole"})", "--json"});
+  const ProcessResult run =
+      runScatterlab({"profile", R"({"type": "subsurface", "profile": "dipole"})", "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json out = json::parse(run.out);
   EXPECT_EQ(out["profile_model"], "dipole");
@@ -40,8 +41,8 @@ TEST(ProfileCli, PrintsTheProfileAndJensensReflectance) {
 
 TEST(ProfileCli, WalkReferenceAgreesWithTheHFunctionWhenIndexMatched) {
   const ProcessResult run =
-      runScatterlab({"profile", R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "0.8", "--eta", "1",
-                     "--g", "0", "--paths", "40000", "--bins", "6", "--json"});
+      runScatterlab({"profile", R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "0.8",
+                     "--eta", "1", "--g", "0", "--paths", "40000", "--bins", "6", "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json out = json::parse(run.out);
   for (const json& channel : out["channels"]) {
@@ -55,16 +56,17 @@ TEST(ProfileCli, WalkReferenceAgreesWithTheHFunctionWhenIndexMatched) {
 }
 
 TEST(ProfileCli, TextOutputNamesTheColumns) {
-  const ProcessResult run = runScatterlab({"profile", SCATTERLAB_DATA_DIR "/materials/subsurface-skin-burley.json",
-                                           "--reference", "walk", "--paths", "2000", "--bins", "3"});
+  const ProcessResult run =
+      runScatterlab({"profile", SCATTERLAB_DATA_DIR "/materials/subsurface-skin-burley.json", "--reference",
+                     "walk", "--paths", "2000", "--bins", "3"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   for (const char* text : {"total diffuse reflectance", "random walk", "R_r profile", "R_b walk", "+- se"})
     EXPECT_NE(run.out.find(text), std::string::npos) << text << " missing from:\n" << run.out;
 }
 
 TEST(ProfileCli, CompareTablesEveryModelAgainstTheWalk) {
-  const ProcessResult run = runScatterlab({"profile", R"({"type": "subsurface", "medium": "Skin1"})", "--reference",
-                                           "walk", "--compare", "--paths", "20000", "--json"});
+  const ProcessResult run = runScatterlab({"profile", R"({"type": "subsurface", "medium": "Skin1"})",
+                                           "--reference", "walk", "--compare", "--paths", "20000", "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json out = json::parse(run.out);
   std::set<std::string> models;
@@ -80,7 +82,8 @@ TEST(ProfileCli, CompareTablesEveryModelAgainstTheWalk) {
   EXPECT_EQ(walk["channels"].size(), 3u);
   for (int c = 0; c < 3; ++c)  // all orders = single + multiple scattering
     EXPECT_NEAR(walk["total"][size_t(c)].get<double>(),
-                walk["channels"][size_t(c)]["single_scattering"].get<double>() + walk["multiple_total"][size_t(c)].get<double>(),
+                walk["channels"][size_t(c)]["single_scattering"].get<double>() +
+                    walk["multiple_total"][size_t(c)].get<double>(),
                 1e-12);
   EXPECT_EQ(out["radius_edges"].size(), 25u);
   // The dipole's total is Jensen's closed form; its error is relative to the walk's total.
@@ -88,8 +91,8 @@ TEST(ProfileCli, CompareTablesEveryModelAgainstTheWalk) {
   EXPECT_EQ(dipole["model"], "dipole");
   EXPECT_NEAR(dipole["total_error"][0].get<double>(),
               dipole["total_reflectance"][0].get<double>() / walk["total"][0].get<double>() - 1.0, 1e-12);
-  const ProcessResult text = runScatterlab({"profile", R"({"type": "subsurface", "medium": "Skin1"})", "--reference",
-                                            "walk", "--compare", "--paths", "5000"});
+  const ProcessResult text = runScatterlab({"profile", R"({"type": "subsurface", "medium": "Skin1"})",
+                                            "--reference", "walk", "--compare", "--paths", "5000"});
   ASSERT_EQ(text.exitCode, 0) << describe(text);
   for (const char* fragment : {"multiple only", "single scattering", "noise floor", "beam-diffusion", "R(r)"})
     EXPECT_NE(text.out.find(fragment), std::string::npos) << fragment << " missing from:\n" << text.out;
@@ -103,7 +106,8 @@ TEST(ShapeFactorCli, FitsAndComparesWithThePublishedFit) {
   ASSERT_EQ(out["rows"].size(), 2u);
   for (const json& row : out["rows"]) {
     const double a = row["albedo"].get<double>();
-    EXPECT_NEAR(row["published_shape_factor"].get<double>(), 1.85 - a + 7 * std::pow(std::abs(a - 0.8), 3), 1e-12);
+    EXPECT_NEAR(row["published_shape_factor"].get<double>(), 1.85 - a + 7 * std::pow(std::abs(a - 0.8), 3),
+                1e-12);
     // 30000 paths: the walk's noise in s is ~2%; the shape fit (0.7% and 2.5% from the
     // published s at these albedos with 4e6 paths) lands within 10%.
     EXPECT_NEAR(row["shape_factor"].get<double>() / row["published_shape_factor"].get<double>(), 1.0, 0.1);
@@ -121,14 +125,16 @@ TEST(ShapeFactorCli, FitsAndComparesWithThePublishedFit) {
   EXPECT_EQ(json::parse(two.out)["rows"], out["rows"]);
   const ProcessResult text = runScatterlab({"shape-factor", "--albedos", "0.5", "--paths", "5000"});
   ASSERT_EQ(text.exitCode, 0) << describe(text);
-  for (const char* fragment : {"shape s", "normalised s", "power P", "published s", "least squares of r R(r)", "mean |difference|"})
+  for (const char* fragment :
+       {"shape s", "normalised s", "power P", "published s", "least squares of r R(r)", "mean |difference|"})
     EXPECT_NE(text.out.find(fragment), std::string::npos) << fragment << " missing from:\n" << text.out;
 }
 
 TEST(ShapeFactorCli, BadInputExitsTwo) {
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"shape-factor", "--albedos", "1"}, {"shape-factor", "--albedos", "0.5,abc"},
-        {"shape-factor", "--paths", "10"}, {"shape-factor", "--annulus-width", "0"}}) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"shape-factor", "--albedos", "1"},
+                                               {"shape-factor", "--albedos", "0.5,abc"},
+                                               {"shape-factor", "--paths", "10"},
+                                               {"shape-factor", "--annulus-width", "0"}}) {
     const ProcessResult run = runScatterlab(args);
     EXPECT_EQ(run.exitCode, 2) << describe(run);
     EXPECT_TRUE(run.out.empty()) << run.out;
@@ -152,34 +158,48 @@ TEST_P(BadProfileInput, ExitsTwoWithAMessage) {
   EXPECT_EQ(run.exitCode, 2) << describe(run);
   EXPECT_TRUE(run.out.empty()) << run.out;
   for (const std::string& fragment : GetParam().messageContains)
-    EXPECT_NE(run.err.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << run.err;
+    EXPECT_NE(run.err.find(fragment), std::string::npos)
+        << "\"" << fragment << "\" missing from: " << run.err;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     ProfileCli, BadProfileInput,
     testing::Values(
-        BadProfileRun{"negative coefficients", {R"({"type": "subsurface", "sigma_s": [1, -2, 1], "sigma_a": 0.1})"},
+        BadProfileRun{"negative coefficients",
+                      {R"({"type": "subsurface", "sigma_s": [1, -2, 1], "sigma_a": 0.1})"},
                       {"\"sigma_s\"", "g = -2", ">= 0"}},
-        BadProfileRun{"reflectance outside [0, 1]", {R"({"type": "subsurface", "reflectance": 1.5, "mfp": 1})"},
+        BadProfileRun{"reflectance outside [0, 1]",
+                      {R"({"type": "subsurface", "reflectance": 1.5, "mfp": 1})"},
                       {"\"reflectance\"", "1.5", "[0, 1]"}},
-        BadProfileRun{"walk albedo outside [0, 1]", {R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "1.5"},
+        BadProfileRun{"walk albedo outside [0, 1]",
+                      {R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "1.5"},
                       {"--albedo", "1.5", "[0, 1]"}},
         BadProfileRun{"eta zero", {R"({"type": "subsurface", "eta": 0})"}, {"\"eta\"", "(0, 4]"}},
-        BadProfileRun{"walk eta negative", {R"({"type": "subsurface"})", "--reference", "walk", "--eta", "-1"},
+        BadProfileRun{"walk eta negative",
+                      {R"({"type": "subsurface"})", "--reference", "walk", "--eta", "-1"},
                       {"--eta", "-1"}},
-        BadProfileRun{"zero mean free path", {R"({"type": "subsurface", "reflectance": 0.5, "mfp": 0})"},
+        BadProfileRun{"zero mean free path",
+                      {R"({"type": "subsurface", "reflectance": 0.5, "mfp": 0})"},
                       {"\"mfp\"", "> 0"}},
-        BadProfileRun{"unknown medium", {R"({"type": "subsurface", "medium": "Jelly"})"},
+        BadProfileRun{"unknown medium",
+                      {R"({"type": "subsurface", "medium": "Jelly"})"},
                       {"\"medium\"", "\"Jelly\"", "\"Skin1\""}},
-        BadProfileRun{"a BSDF", {R"({"type": "lambertian"})"}, {"\"lambertian\"", "not a subsurface material"}},
-        BadProfileRun{"walk options without the walk", {R"({"type": "subsurface"})", "--albedo", "0.5"},
+        BadProfileRun{
+            "a BSDF", {R"({"type": "lambertian"})"}, {"\"lambertian\"", "not a subsurface material"}},
+        BadProfileRun{"walk options without the walk",
+                      {R"({"type": "subsurface"})", "--albedo", "0.5"},
                       {"--albedo", "--reference walk"}},
-        BadProfileRun{"two albedos", {R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "0.5,0.6"},
+        BadProfileRun{"two albedos",
+                      {R"({"type": "subsurface"})", "--reference", "walk", "--albedo", "0.5,0.6"},
                       {"--albedo", "three"}},
-        BadProfileRun{"unknown reference", {R"({"type": "subsurface"})", "--reference", "monte-carlo"}, {"--reference"}},
-        BadProfileRun{"radii the wrong way round", {R"({"type": "subsurface"})", "--min-radius", "5", "--max-radius", "1"},
+        BadProfileRun{"unknown reference",
+                      {R"({"type": "subsurface"})", "--reference", "monte-carlo"},
+                      {"--reference"}},
+        BadProfileRun{"radii the wrong way round",
+                      {R"({"type": "subsurface"})", "--min-radius", "5", "--max-radius", "1"},
                       {"--min-radius", "--max-radius"}},
-        BadProfileRun{"compare without the walk", {R"({"type": "subsurface"})", "--compare"},
+        BadProfileRun{"compare without the walk",
+                      {R"({"type": "subsurface"})", "--compare"},
                       {"--compare", "--reference walk"}},
         BadProfileRun{"compare with the walk's own albedo",
                       {R"({"type": "subsurface"})", "--reference", "walk", "--compare", "--albedo", "0.5"},
@@ -192,29 +212,31 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SubsurfaceCheckCli, ChecksASubsurfaceMaterialWithControls) {
   const ProcessResult run =
-      runScatterlab({"check", R"({"type": "subsurface", "profile": "burley", "medium": "Marble"})", "--samples",
-                     "20000", "--grid", "16x32", "--negative-controls", "--json"});
+      runScatterlab({"check", R"({"type": "subsurface", "profile": "burley", "medium": "Marble"})",
+                     "--samples", "20000", "--grid", "16x32", "--negative-controls", "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json out = json::parse(run.out);
   EXPECT_TRUE(out["passed"].get<bool>());
   std::set<std::string> tests;
   for (const json& row : out["report"]["rows"]) tests.insert(row["test"].get<std::string>());
-  for (const char* test : {"profile energy (r)", "radius chi2 (g)", "radius consistency (b)", "radius inverse (r)",
-                           "directional normalisation", "probe chi2 (aligned frame)", "probe chi2 (tilted frame)",
-                           "control: radial shortcut pdf", "control: wrong channel weights"})
+  for (const char* test :
+       {"profile energy (r)", "radius chi2 (g)", "radius consistency (b)", "radius inverse (r)",
+        "directional normalisation", "probe chi2 (aligned frame)", "probe chi2 (tilted frame)",
+        "control: radial shortcut pdf", "control: wrong channel weights"})
     EXPECT_TRUE(tests.contains(test)) << test;
   EXPECT_EQ(out["materials"][0]["material"]["eta"], 1.5);
 }
 
 TEST(SubsurfaceCheckCli, WritesTheChiSquareMapsOfEveryTest) {
   const auto dir = uniquePath("subsurface-images");
-  const ProcessResult run = runScatterlab({"check", R"({"type": "subsurface"})", "--samples", "5000", "--grid", "8x16",
-                                           "--images", dir.string()});
+  const ProcessResult run = runScatterlab({"check", R"({"type": "subsurface"})", "--samples", "5000",
+                                           "--grid", "8x16", "--images", dir.string()});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   int files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    EXPECT_TRUE(name.find("radius_") != std::string::npos || name.find("probe_") != std::string::npos) << name;
+    EXPECT_TRUE(name.find("radius_") != std::string::npos || name.find("probe_") != std::string::npos)
+        << name;
     ++files;
   }
   EXPECT_EQ(files, 5 * 4);  // 3 radius + 2 probe tests: observed, expected, residual, tables
@@ -222,7 +244,8 @@ TEST(SubsurfaceCheckCli, WritesTheChiSquareMapsOfEveryTest) {
 }
 
 TEST(SubsurfaceCheckCli, BadSubsurfaceMaterialExitsTwo) {
-  const ProcessResult run = runScatterlab({"check", R"({"type": "subsurface", "sigma_s": 1, "sigma_a": -1})"});
+  const ProcessResult run =
+      runScatterlab({"check", R"({"type": "subsurface", "sigma_s": 1, "sigma_a": -1})"});
   EXPECT_EQ(run.exitCode, 2) << describe(run);
   EXPECT_NE(run.err.find("\"sigma_a\""), std::string::npos) << run.err;
 }
@@ -230,8 +253,8 @@ TEST(SubsurfaceCheckCli, BadSubsurfaceMaterialExitsTwo) {
 TEST(SubsurfaceModelsCli, ListsTheSubsurfaceModelAndItsMedia) {
   const ProcessResult run = runScatterlab({"models"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
-  for (const char* text : {"subsurface", "beam-diffusion", "better-dipole", "\"Skin1\"", "\"Wholemilk\"", "burley_fit",
-                           "reflectance", "mfp", "roughness"})
+  for (const char* text : {"subsurface", "beam-diffusion", "better-dipole", "\"Skin1\"", "\"Wholemilk\"",
+                           "burley_fit", "reflectance", "mfp", "roughness"})
     EXPECT_NE(run.out.find(text), std::string::npos) << text;
   const json catalog = json::parse(runScatterlab({"models", "--json"}).out);
   bool found = false;

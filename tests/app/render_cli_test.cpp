@@ -51,7 +51,8 @@ std::string readBytes(const fs::path& path) {
 }
 
 // A map written by the library, for --env.
-fs::path writeMap(const std::string& stem, int width, int height, float value, int badX = -1, float bad = 0.0f) {
+fs::path writeMap(const std::string& stem, int width, int height, float value, int badX = -1,
+                  float bad = 0.0f) {
   Image image(width, height, 3, value);
   if (badX >= 0) image.pixel(badX, 0)[0] = bad;
   const fs::path path = uniquePath(stem) += ".exr";
@@ -62,15 +63,16 @@ fs::path writeMap(const std::string& stem, int width, int height, float value, i
 TEST(RenderCli, HelpListsEveryOption) {
   const ProcessResult run = runScatterlab({"render", "--help"});
   EXPECT_EQ(run.exitCode, 0) << describe(run);
-  expectMentions(run.out, {"--scene", "--env", "--env-strength", "--env-rotate", "--spp", "--res", "--threads", "--seed",
-                           "--max-depth", "--estimator", "--subsurface", "--filter", "--exposure", "--layers", "--label", "--columns",
-                           "--out", "--json"});
+  expectMentions(run.out, {"--scene", "--env", "--env-strength", "--env-rotate", "--spp", "--res",
+                           "--threads", "--seed", "--max-depth", "--estimator", "--subsurface", "--filter",
+                           "--exposure", "--layers", "--label", "--columns", "--out", "--json"});
 }
 
 TEST(RenderCli, WritesExrAndPngWithLayersAndJson) {
   const fs::path prefix = uniquePath("furnace");
-  const ProcessResult run = runScatterlab({"render", WhiteLambertian, "--res", "24x16", "--spp", "8", "--layers",
-                                           "albedo,normal,variance", "--out", prefix.string(), "--json"});
+  const ProcessResult run =
+      runScatterlab({"render", WhiteLambertian, "--res", "24x16", "--spp", "8", "--layers",
+                     "albedo,normal,variance", "--out", prefix.string(), "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json out = json::parse(run.out);
   EXPECT_EQ(out["res"], json({24, 16}));
@@ -85,17 +87,19 @@ TEST(RenderCli, WritesExrAndPngWithLayersAndJson) {
   EXPECT_EQ(color.width(), 24);
   EXPECT_EQ(color.height(), 16);
   std::vector<std::string> channels = readExrChannelNames(prefix.string() + ".exr");
-  EXPECT_EQ(channels, (std::vector<std::string>{"B", "G", "R", "albedo.B", "albedo.G", "albedo.R", "normal.X", "normal.Y",
-                                                "normal.Z", "variance.B", "variance.G", "variance.R"}));
+  EXPECT_EQ(channels,
+            (std::vector<std::string>{"B", "G", "R", "albedo.B", "albedo.G", "albedo.R", "normal.X",
+                                      "normal.Y", "normal.Z", "variance.B", "variance.G", "variance.R"}));
   EXPECT_GT(fs::file_size(prefix.string() + ".png"), 50u);
 }
 
 TEST(RenderCli, MapAndPreviewSceneAndGaussianFilter) {
   const fs::path prefix = uniquePath("preview");
   const ProcessResult run = runScatterlab(
-      {"render", (fs::path(SCATTERLAB_DATA_DIR) / "materials" / "copper-beckmann.json").string(), "--scene", "preview",
-       "--env", (fs::path(SCATTERLAB_DATA_DIR) / "envmaps" / "studio.exr").string(), "--env-rotate", "45", "--filter",
-       "gaussian", "--res", "20", "--spp", "4", "--exposure", "1", "--out", prefix.string()});
+      {"render", (fs::path(SCATTERLAB_DATA_DIR) / "materials" / "copper-beckmann.json").string(), "--scene",
+       "preview", "--env", (fs::path(SCATTERLAB_DATA_DIR) / "envmaps" / "studio.exr").string(),
+       "--env-rotate", "45", "--filter", "gaussian", "--res", "20", "--spp", "4", "--exposure", "1", "--out",
+       prefix.string()});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   expectMentions(run.out, {"copper-beckmann", "20x20", "wrote"});
   EXPECT_TRUE(fs::exists(prefix.string() + ".exr"));
@@ -105,9 +109,9 @@ TEST(RenderCli, MapAndPreviewSceneAndGaussianFilter) {
 TEST(RenderCli, GalleryIsOneLabelledSheet) {
   const fs::path prefix = uniquePath("gallery");
   const ProcessResult run =
-      runScatterlab({"render", WhiteLambertian, R"({"type":"dielectric"})", R"({"type":"conductor"})", "--res", "16",
-                     "--spp", "2", "--label", "white", "--label", "glass", "--label", "metal", "--columns", "3", "--out",
-                     prefix.string(), "--json"});
+      runScatterlab({"render", WhiteLambertian, R"({"type":"dielectric"})", R"({"type":"conductor"})",
+                     "--res", "16", "--spp", "2", "--label", "white", "--label", "glass", "--label", "metal",
+                     "--columns", "3", "--out", prefix.string(), "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json out = json::parse(run.out);
   ASSERT_EQ(out["renders"].size(), 3u);
@@ -119,10 +123,12 @@ TEST(RenderCli, GalleryIsOneLabelledSheet) {
 
 TEST(RenderCli, SameImageForOneAndTwoThreads) {
   const fs::path one = uniquePath("threads1"), two = uniquePath("threads2");
-  const std::vector<std::string> common{"render", R"({"type":"rough-dielectric","alpha":0.3})", "--res", "24", "--spp",
-                                        "4", "--seed", "7"};
-  ASSERT_EQ(runScatterlab(common + std::vector<std::string>{"--threads", "1", "--out", one.string()}).exitCode, 0);
-  ASSERT_EQ(runScatterlab(common + std::vector<std::string>{"--threads", "2", "--out", two.string()}).exitCode, 0);
+  const std::vector<std::string> common{
+      "render", R"({"type":"rough-dielectric","alpha":0.3})", "--res", "24", "--spp", "4", "--seed", "7"};
+  ASSERT_EQ(
+      runScatterlab(common + std::vector<std::string>{"--threads", "1", "--out", one.string()}).exitCode, 0);
+  ASSERT_EQ(
+      runScatterlab(common + std::vector<std::string>{"--threads", "2", "--out", two.string()}).exitCode, 0);
   EXPECT_EQ(readBytes(one.string() + ".exr"), readBytes(two.string() + ".exr"));
   EXPECT_EQ(readBytes(one.string() + ".png"), readBytes(two.string() + ".png"));
 }
@@ -137,8 +143,8 @@ TEST(RenderCli, SubsurfaceGalleryInBothModes) {
         {"render", R"({"type":"subsurface","medium":"Marble","scale":10})",
          R"({"type":"subsurface","medium":"Skin1","profile":"beam-diffusion","boundary":"rough","roughness":0.2})",
          R"({"type":"subsurface","medium":"Ketchup","profile":"dipole"})",
-         R"({"type":"subsurface","medium":"Wholemilk","profile":"better-dipole"})", "--res", "16", "--spp", "2",
-         "--subsurface", mode, "--out", prefix.string(), "--json"});
+         R"({"type":"subsurface","medium":"Wholemilk","profile":"better-dipole"})", "--res", "16", "--spp",
+         "2", "--subsurface", mode, "--out", prefix.string(), "--json"});
     ASSERT_EQ(run.exitCode, 0) << describe(run);
     const json out = json::parse(run.out);
     EXPECT_EQ(out["subsurface"], mode);
@@ -159,13 +165,16 @@ class RenderCliBadInput : public testing::Test {
  protected:
   fs::path prefix = uniquePath("bad");
   std::vector<std::string> with(const std::vector<std::string>& extra) const {
-    return std::vector<std::string>{"render", WhiteLambertian, "--res", "8", "--spp", "1", "--out", prefix.string()} + extra;
+    return std::vector<std::string>{"render", WhiteLambertian, "--res",        "8", "--spp",
+                                    "1",      "--out",         prefix.string()} +
+           extra;
   }
 };
 
 TEST_F(RenderCliBadInput, Resolutions) {
   expectBadInput(with({"--res", "0x16"}), {"--res", "\"0x16\"", "WxH"}, prefix);
-  expectBadInput(with({"--res", "100000x100000"}), {"--res", "\"100000x100000\"", std::to_string(MaxImageSide)}, prefix);
+  expectBadInput(with({"--res", "100000x100000"}),
+                 {"--res", "\"100000x100000\"", std::to_string(MaxImageSide)}, prefix);
   expectBadInput(with({"--res", "8192x8192"}), {"--res", std::to_string(MaxImagePixels)}, prefix);
   expectBadInput(with({"--res", "abc"}), {"--res", "\"abc\""}, prefix);
 }
@@ -176,18 +185,22 @@ TEST_F(RenderCliBadInput, SamplesAndSettings) {
   expectBadInput(with({"--scene", "cornell"}), {"--scene", "\"cornell\"", "\"sphere\", \"preview\""}, prefix);
   expectBadInput(with({"--estimator", "guess"}), {"--estimator", "\"mis\", \"bsdf\", \"light\""}, prefix);
   expectBadInput(with({"--subsurface", "photon"}), {"--subsurface", "\"diffusion\", \"walk\""}, prefix);
-  expectBadInput(with({"--layers", "depth"}), {"--layers", "\"depth\"", "\"albedo\", \"normal\", \"variance\""}, prefix);
+  expectBadInput(with({"--layers", "depth"}),
+                 {"--layers", "\"depth\"", "\"albedo\", \"normal\", \"variance\""}, prefix);
   expectBadInput(with({"--env-strength", "nan"}), {"--env-strength", "\"nan\""}, prefix);
 }
 
 TEST_F(RenderCliBadInput, Materials) {
-  expectBadInput({"render", R"({"type":"lambertian","albedo":2})", "--out", prefix.string()}, {"albedo"}, prefix);
-  expectBadInput({"render", "no-such-material.json", "--out", prefix.string()}, {"no-such-material.json"}, prefix);
+  expectBadInput({"render", R"({"type":"lambertian","albedo":2})", "--out", prefix.string()}, {"albedo"},
+                 prefix);
+  expectBadInput({"render", "no-such-material.json", "--out", prefix.string()}, {"no-such-material.json"},
+                 prefix);
   // A subsurface material's rough boundary is a rough dielectric: eta 1 has no microfacet refraction.
   expectBadInput({"render", R"({"type":"subsurface","eta":1,"boundary":"rough"})", "--out", prefix.string()},
                  {"boundary", "[1.02, 4]"}, prefix);
-  expectBadInput({"render", R"({"type":"subsurface","sigma_s":[1,1,1],"sigma_a":[-1,0,0]})", "--out", prefix.string()},
-                 {"sigma_a"}, prefix);
+  expectBadInput(
+      {"render", R"({"type":"subsurface","sigma_s":[1,1,1],"sigma_a":[-1,0,0]})", "--out", prefix.string()},
+      {"sigma_a"}, prefix);
   expectBadInput({"render", WhiteLambertian, WhiteLambertian, "--label", "one", "--out", prefix.string()},
                  {"--label", "1 labels for 2 materials"}, prefix);
   expectBadInput({"render", WhiteLambertian, WhiteLambertian, "--layers", "albedo", "--out", prefix.string()},
@@ -199,29 +212,35 @@ TEST_F(RenderCliBadInput, EnvironmentMaps) {
   expectBadInput(with({"--env", missing.string()}), {"--env", missing.string(), "no such file"}, prefix);
   const fs::path text = uniquePath("text") += ".exr";
   std::ofstream(text) << "not an image";
-  expectBadInput(with({"--env", text.string()}), {"--env", text.string(), "cannot be read as OpenEXR"}, prefix);
+  expectBadInput(with({"--env", text.string()}), {"--env", text.string(), "cannot be read as OpenEXR"},
+                 prefix);
   const fs::path square = writeMap("square", 16, 16, 1.0f);
   expectBadInput(with({"--env", square.string()}), {"--env", square.string(), "width = 2 x height"}, prefix);
   const fs::path nan = writeMap("nan", 16, 8, 1.0f, 3, NAN);
-  expectBadInput(with({"--env", nan.string()}), {"--env", nan.string(), "pixel (3, 0) channel R", "finite"}, prefix);
+  expectBadInput(with({"--env", nan.string()}), {"--env", nan.string(), "pixel (3, 0) channel R", "finite"},
+                 prefix);
   const fs::path negative = writeMap("negative", 16, 8, 1.0f, 2, -2.0f);
-  expectBadInput(with({"--env", negative.string()}), {"--env", negative.string(), "pixel (2, 0)", ">= 0"}, prefix);
+  expectBadInput(with({"--env", negative.string()}), {"--env", negative.string(), "pixel (2, 0)", ">= 0"},
+                 prefix);
 }
 
 TEST_F(RenderCliBadInput, Outputs) {
   const fs::path nowhere = uniquePath("no-such-dir") / "image";
-  expectBadInput({"render", WhiteLambertian, "--out", nowhere.string()}, {"--out", "does not exist"}, nowhere);
+  expectBadInput({"render", WhiteLambertian, "--out", nowhere.string()}, {"--out", "does not exist"},
+                 nowhere);
   // PREFIX.exr occupied by a directory: rejected before rendering.
   const fs::path occupied = uniquePath("occupied");
   fs::create_directories(occupied.string() + ".exr");
-  const ProcessResult run = runScatterlab({"render", WhiteLambertian, "--res", "8", "--out", occupied.string()});
+  const ProcessResult run =
+      runScatterlab({"render", WhiteLambertian, "--res", "8", "--out", occupied.string()});
   EXPECT_EQ(run.exitCode, 2) << describe(run);
   expectMentions(run.err, {"--out", "is a directory"});
   EXPECT_FALSE(fs::exists(occupied.string() + ".png"));
   // PREFIX.png occupied: found before anything is written, so no EXR either.
   const fs::path pngOccupied = uniquePath("png-occupied");
   fs::create_directories(pngOccupied.string() + ".png");
-  const ProcessResult second = runScatterlab({"render", WhiteLambertian, "--res", "8", "--out", pngOccupied.string()});
+  const ProcessResult second =
+      runScatterlab({"render", WhiteLambertian, "--res", "8", "--out", pngOccupied.string()});
   EXPECT_EQ(second.exitCode, 2) << describe(second);
   EXPECT_FALSE(fs::exists(pngOccupied.string() + ".exr"));
   expectBadInput({"render", WhiteLambertian}, {"--out"}, prefix);

@@ -31,7 +31,9 @@ const std::vector<std::string> Perturbed{"--log-noise",  "0.1",  "--noise-floor"
 // A check of a measured file that takes a few seconds: few samples, a coarse grid.
 const std::vector<std::string> QuickCheck{"--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"};
 
-std::string fitFile() { return (fs::path(SCATTERLAB_DATA_DIR) / "published-fits" / "ngan_cooktorrance.fit").string(); }
+std::string fitFile() {
+  return (fs::path(SCATTERLAB_DATA_DIR) / "published-fits" / "ngan_cooktorrance.fit").string();
+}
 
 // ---- synth ----------------------------------------------------------------------------------
 
@@ -62,7 +64,9 @@ TEST(SynthCli, SameSeedSameBytesForAnyThreadCount) {
   const fs::path one = uniquePath("one"), two = uniquePath("two"), other = uniquePath("other");
   const std::vector<std::string> base{"synth", "--fit", fitFile(), "--name", "gray-plastic"};
   const auto run = [&](const fs::path& out, const std::string& seed, const std::string& threads) {
-    return runScatterlab(base + Perturbed + std::vector<std::string>{"--out", out.string(), "--seed", seed, "--threads", threads});
+    return runScatterlab(
+        base + Perturbed +
+        std::vector<std::string>{"--out", out.string(), "--seed", seed, "--threads", threads});
   };
   EXPECT_EQ(run(one, "7", "1").exitCode, 0);
   EXPECT_EQ(run(two, "7", "2").exitCode, 0);
@@ -84,9 +88,10 @@ TEST(SynthCli, ParallelTableEqualsTheSerialOne) {
 
 TEST(SynthCli, FitLineWithPerturbationsReportsWhatItDid) {
   const fs::path out = uniquePath("bronze");
-  const ProcessResult run = runScatterlab(
-      std::vector<std::string>{"synth", "--fit", fitFile(), "--name", "alum-bronze", "--out", out.string(), "--json"} +
-      Perturbed + std::vector<std::string>{"--seed", "7"});
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"synth", "--fit", fitFile(), "--name", "alum-bronze", "--out",
+                                             out.string(), "--json"} +
+                    Perturbed + std::vector<std::string>{"--seed", "7"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json written = json::parse(run.out).at("written").at(0);
   EXPECT_EQ(written.at("fit").at("name"), "alum-bronze");
@@ -114,11 +119,15 @@ TEST(SynthCli, BadInputWritesNothing) {
   expectBadInput({"synth", R"({"type": "lambertian"})"}, {"--out", "missing"});
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", (out / "sub" / "x.binary").string()},
                  {"--out", "does not exist"});
-  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", testOutputDir().string()}, {"is a directory"});
-  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--log-noise", "-1"}, {"--log-noise", "-1"});
-  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--missing-above", "0"}, {"--missing-above"});
+  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", testOutputDir().string()},
+                 {"is a directory"});
+  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--log-noise", "-1"},
+                 {"--log-noise", "-1"});
+  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--missing-above", "0"},
+                 {"--missing-above"});
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--force"}, {"--force"});
-  expectBadInput({"synth", "--bundle", (out / "b").string(), "--out", o}, {"--out", "not used with --bundle"});
+  expectBadInput({"synth", "--bundle", (out / "b").string(), "--out", o},
+                 {"--out", "not used with --bundle"});
   EXPECT_FALSE(fs::exists(out));
 }
 
@@ -161,7 +170,8 @@ TEST(SynthBundle, GeneratesEveryMaterialThenKeepsTheCache) {
   EXPECT_EQ(second.out.find("wrote"), std::string::npos) << second.out;
   // The bundle's chrome is the --fit chrome with the same seed.
   const fs::path single = uniquePath("chrome");
-  ASSERT_EQ(runScatterlab({"synth", "--fit", fitFile(), "--name", "chrome", "--out", single.string()}).exitCode, 0);
+  ASSERT_EQ(
+      runScatterlab({"synth", "--fit", fitFile(), "--name", "chrome", "--out", single.string()}).exitCode, 0);
   EXPECT_TRUE(readFile(single) == readFile(dir / "chrome.binary"));
   fs::remove(single);
   fs::remove_all(dir);
@@ -211,7 +221,8 @@ TEST_F(MeasuredCheck, RelativeFileInAMaterialFileIsFound) {
   fs::create_directories(dir / "data");
   fs::copy_file(table(), dir / "data" / "felt.binary");
   std::ofstream(dir / "felt.json") << R"({"type": "measured", "file": "data/felt.binary"})";
-  const ProcessResult run = runScatterlab(std::vector<std::string>{"check", (dir / "felt.json").string()} + QuickCheck);
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"check", (dir / "felt.json").string()} + QuickCheck);
   EXPECT_EQ(run.exitCode, 0) << describe(run);
   fs::remove_all(dir);
 }

@@ -64,7 +64,8 @@ TEST(StratifiedSubset, WeightsSumToTheStratumSizesAndEveryStratumIsKept) {
   for (size_t i = 0; i < all.size(); ++i) ++allCount[all.stratum[i]];
   for (size_t i = 0; i < subset.size(); ++i) subsetWeight[subset.stratum[i]] += subset.weight[i];
   EXPECT_EQ(allCount.size(), subsetWeight.size());
-  for (const auto& [stratum, n] : allCount) EXPECT_NEAR(subsetWeight[stratum], double(n), 1e-9 * double(n)) << stratum;
+  for (const auto& [stratum, n] : allCount)
+    EXPECT_NEAR(subsetWeight[stratum], double(n), 1e-9 * double(n)) << stratum;
   // About the target: ceil per stratum adds at most one sample per stratum.
   EXPECT_GE(subset.size(), 50000u);
   EXPECT_LE(subset.size(), 50000u + allCount.size());
@@ -82,7 +83,8 @@ TEST(StratifiedSubset, SameSeedSameSubsetOtherSeedOtherSubset) {
   EXPECT_GT(differ, a.size() / 2);
   // No sample is chosen twice.
   std::set<std::tuple<double, double, double, double>> seen;
-  for (size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(seen.insert({a.wi[i].x, a.wi[i].z, a.wo[i].x, a.wo[i].y}).second);
+  for (size_t i = 0; i < a.size(); ++i)
+    EXPECT_TRUE(seen.insert({a.wi[i].x, a.wi[i].z, a.wo[i].x, a.wo[i].y}).second);
 }
 
 TEST(StratifiedSubset, TargetZeroOrLargerThanTheSetKeepsEverything) {

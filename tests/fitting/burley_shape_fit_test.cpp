@@ -16,12 +16,14 @@ namespace {
 
 BurleyShapeFit fitWalk(const HalfSpaceWalkSettings& settings, double albedo) {
   const BurleyShapeFit fit = fitBurleyShapeFactor(simulateHalfSpace(settings), albedo);
-  std::printf("A %.2f  c %.8f  walk total %.5f +- %.5f  published s %.4f  shape s %.4f +- %.4f (%+.1f%%, power %.4f)  "
-              "normalised s %.4f +- %.4f (%+.1f%%)\n",
-              fit.albedo, fit.walkAlbedo, fit.walkReflectance, fit.walkStdError, fit.publishedShapeFactor,
-              fit.shapeFactor, fit.shapeStdError, 100.0 * (fit.shapeFactor / fit.publishedShapeFactor - 1.0), fit.power,
-              fit.normalisedShapeFactor, fit.normalisedStdError,
-              100.0 * (fit.normalisedShapeFactor / fit.publishedShapeFactor - 1.0));
+  std::printf(
+      "A %.2f  c %.8f  walk total %.5f +- %.5f  published s %.4f  shape s %.4f +- %.4f (%+.1f%%, power %.4f) "
+      " "
+      "normalised s %.4f +- %.4f (%+.1f%%)\n",
+      fit.albedo, fit.walkAlbedo, fit.walkReflectance, fit.walkStdError, fit.publishedShapeFactor,
+      fit.shapeFactor, fit.shapeStdError, 100.0 * (fit.shapeFactor / fit.publishedShapeFactor - 1.0),
+      fit.power, fit.normalisedShapeFactor, fit.normalisedStdError,
+      100.0 * (fit.normalisedShapeFactor / fit.publishedShapeFactor - 1.0));
   EXPECT_TRUE(fit.shapeFit.converged) << fit.shapeFit.message;
   EXPECT_TRUE(fit.normalisedFit.converged) << fit.normalisedFit.message;
   return fit;
@@ -96,8 +98,9 @@ TEST(BurleyShapeFit, TheNoiseEstimateMatchesTheSpreadOverSeeds) {
     shapeSum += sqr((f.shapeFactor - shapeMean) / f.shapeStdError);
     normalisedSum += sqr((f.normalisedShapeFactor - normalisedMean) / f.normalisedStdError);
   }
-  std::printf("sum of squared standardised deviations over 8 seeds: shape %.2f, normalised %.2f (chi^2_7: mean 7)\n",
-              shapeSum, normalisedSum);
+  std::printf(
+      "sum of squared standardised deviations over 8 seeds: shape %.2f, normalised %.2f (chi^2_7: mean 7)\n",
+      shapeSum, normalisedSum);
   EXPECT_GT(shapeSum, 0.60);
   EXPECT_LT(shapeSum, 24.3);
   EXPECT_GT(normalisedSum, 0.60);

@@ -50,29 +50,33 @@ TEST_P(CrossModel, MicrofacetLobesBeatLambertianOnlyInEveryMetric) {
   const std::vector<json> truth = publishedFit(line, "ngan_cooktorrance.fit");
   const BrdfSamples samples = cellSamples(GroundTruth(truth), 1);
   const FitModel ggx(parseModelSpec("lambertian+conductor"), false);
-  const FitModel beckmann(parseModelSpec(R"(lambertian+{"type":"conductor","distribution":"beckmann"})"), false);
+  const FitModel beckmann(parseModelSpec(R"(lambertian+{"type":"conductor","distribution":"beckmann"})"),
+                          false);
   const FitModel lambertian(parseModelSpec("lambertian"), false);
   for (const std::string& name : metricNames()) {
     const Metric metric = *parseMetric(name);
     const FitResult diffuseOnly = fitBrdf(lambertian, samples, quickOptions(metric));
     const RegionErrors diffuseErrors = regionErrors(lambertian, diffuseOnly.x, samples, truth);
-    std::printf("%-22s %-9s lambertian      cost %10.4g  highlight %6.3f  off %6.3f\n", line.c_str(), name.c_str(),
-                diffuseOnly.final.finalCost, diffuseErrors.highlight, diffuseErrors.off);
-    for (const auto& [label, model] : {std::pair<std::string, const FitModel*>{"ggx", &ggx}, {"beckmann", &beckmann}}) {
+    std::printf("%-22s %-9s lambertian      cost %10.4g  highlight %6.3f  off %6.3f\n", line.c_str(),
+                name.c_str(), diffuseOnly.final.finalCost, diffuseErrors.highlight, diffuseErrors.off);
+    for (const auto& [label, model] :
+         {std::pair<std::string, const FitModel*>{"ggx", &ggx}, {"beckmann", &beckmann}}) {
       const FitResult fit = fitBrdf(*model, samples, quickOptions(metric));
       const RegionErrors errors = regionErrors(*model, fit.x, samples, truth);
-      std::printf("%-22s %-9s %-15s cost %10.4g  highlight %6.3f  off %6.3f  alpha %.4f\n", line.c_str(), name.c_str(),
-                  label.c_str(), fit.final.finalCost, errors.highlight, errors.off,
+      std::printf("%-22s %-9s %-15s cost %10.4g  highlight %6.3f  off %6.3f  alpha %.4f\n", line.c_str(),
+                  name.c_str(), label.c_str(), fit.final.finalCost, errors.highlight, errors.off,
                   parameterValue(*model, fit.x, "conductor.alpha"));
       EXPECT_TRUE(fit.final.converged) << line << " " << name << " " << label << ": " << fit.final.message;
-      EXPECT_LT(fit.final.finalCost, 0.5 * diffuseOnly.final.finalCost) << line << " " << name << " " << label;
+      EXPECT_LT(fit.final.finalCost, 0.5 * diffuseOnly.final.finalCost)
+          << line << " " << name << " " << label;
       EXPECT_LT(errors.highlight, diffuseErrors.highlight) << line << " " << name << " " << label;
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, CrossModel,
-                         ::testing::Values("alum-bronze", "gold-metallic-paint", "red-specular-plastic", "nickel"),
+                         ::testing::Values("alum-bronze", "gold-metallic-paint", "red-specular-plastic",
+                                           "nickel"),
                          [](const auto& info) {
                            std::string name = info.param;
                            std::replace(name.begin(), name.end(), '-', '_');

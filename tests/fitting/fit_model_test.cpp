@@ -27,7 +27,8 @@ void expectRefused(const std::string& spec, const std::vector<std::string>& frag
     ADD_FAILURE() << spec << " was accepted";
   } catch (const MaterialError& error) {
     for (const std::string& fragment : fragments)
-      EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos) << fragment << " not in: " << error.what();
+      EXPECT_NE(std::string(error.what()).find(fragment), std::string::npos)
+          << fragment << " not in: " << error.what();
   }
 }
 
@@ -43,10 +44,11 @@ TEST(ModelSpec, SplitsAtTopLevelPlusSignsOnly) {
 
 TEST(ModelSpec, SumOfLambertianAndCookTorranceFitsAlbedosAndShape) {
   const FitModel model(parseModelSpec("lambertian+ngan-cook-torrance"), false);
-  EXPECT_EQ(names(model), (std::vector<std::string>{"lambertian.albedo.r", "lambertian.albedo.g", "lambertian.albedo.b",
-                                                    "ngan-cook-torrance.albedo.r", "ngan-cook-torrance.albedo.g",
-                                                    "ngan-cook-torrance.albedo.b", "ngan-cook-torrance.eta",
-                                                    "ngan-cook-torrance.roughness"}));
+  EXPECT_EQ(names(model),
+            (std::vector<std::string>{"lambertian.albedo.r", "lambertian.albedo.g", "lambertian.albedo.b",
+                                      "ngan-cook-torrance.albedo.r", "ngan-cook-torrance.albedo.g",
+                                      "ngan-cook-torrance.albedo.b", "ngan-cook-torrance.eta",
+                                      "ngan-cook-torrance.roughness"}));
   // Bounds are the registry's ranges.
   EXPECT_EQ(parameter(model, "ngan-cook-torrance.roughness").lower, 0.001);
   EXPECT_EQ(parameter(model, "ngan-cook-torrance.roughness").upper, 1.0);
@@ -81,11 +83,13 @@ TEST(ModelSpec, IsotropicDataTiesPairsAndLafortunesCxy) {
 
 TEST(ModelSpec, ConductorIsAWhiteLobeWithAScaleUnlessAnIndexIsGiven) {
   const FitModel white(parseModelSpec("lambertian+conductor"), false);
-  EXPECT_EQ(names(white), (std::vector<std::string>{"lambertian.albedo.r", "lambertian.albedo.g", "lambertian.albedo.b",
-                                                    "conductor.scale.r", "conductor.scale.g", "conductor.scale.b",
-                                                    "conductor.alpha"}));
+  EXPECT_EQ(names(white),
+            (std::vector<std::string>{"lambertian.albedo.r", "lambertian.albedo.g", "lambertian.albedo.b",
+                                      "conductor.scale.r", "conductor.scale.g", "conductor.scale.b",
+                                      "conductor.alpha"}));
   EXPECT_EQ(white.components()[1].description["k"], 1e8);
-  const FitModel copper(parseModelSpec(R"({"type":"conductor","metal":"Cu","distribution":"beckmann"})"), false);
+  const FitModel copper(parseModelSpec(R"({"type":"conductor","metal":"Cu","distribution":"beckmann"})"),
+                        false);
   EXPECT_FALSE(copper.components()[0].description.contains("metal"));
   EXPECT_TRUE(std::holds_alternative<ConductorKernel<BeckmannDistribution>>(copper.components()[0].kernel));
 }

@@ -55,8 +55,8 @@ inline BrdfSamples cellSamples(const GroundTruth& truth, int perStratum, uint64_
       std::sort(cells.begin(), cells.end());
       cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
       for (const int pd : cells) {
-        const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(th + 0.5), 0.0, merl::thetaDiffAt(td + 0.5),
-                                                     merl::phiDiffAt(pd + 0.5));
+        const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(th + 0.5), 0.0,
+                                                     merl::thetaDiffAt(td + 0.5), merl::phiDiffAt(pd + 0.5));
         if (!(wi.z > 0) || !(wo.z > 0)) continue;
         samples.add(wi, wo, truth(wi, wo), double(merl::PhiDiffCells) / double(cells.size()), stratum);
       }
@@ -65,7 +65,8 @@ inline BrdfSamples cellSamples(const GroundTruth& truth, int perStratum, uint64_
 }
 
 inline std::vector<json> publishedFit(const std::string& name, const std::string& file) {
-  for (const PublishedFit& fit : readPublishedFits(std::filesystem::path(SCATTERLAB_DATA_DIR) / "published-fits" / file))
+  for (const PublishedFit& fit :
+       readPublishedFits(std::filesystem::path(SCATTERLAB_DATA_DIR) / "published-fits" / file))
     if (fit.name == name) return fit.components();
   ADD_FAILURE() << name << " not in " << file;
   return {};

@@ -52,7 +52,8 @@ template <typename Kernel> struct KernelResiduals {
   std::array<bool, Kernel::Slots> logSlot{};
 
   // `slots` holds the kernel's slots on input and the checked parameters on output.
-  KernelResiduals(const Kernel& k, const Vec3d& in, const Vec3d& out, double* slots) : kernel(k), wi(in), wo(out) {
+  KernelResiduals(const Kernel& k, const Vec3d& in, const Vec3d& out, double* slots)
+      : kernel(k), wi(in), wo(out) {
     for (int i = 0; i < Kernel::Slots; ++i) {
       logSlot[size_t(i)] = slots[i] > 0;
       if (slots[i] > 0) slots[i] = std::log(slots[i]);
@@ -69,7 +70,8 @@ template <typename Kernel> struct KernelResiduals {
     using std::exp;
     using std::log;
     std::array<T, Kernel::Slots> slots;
-    for (int i = 0; i < Kernel::Slots; ++i) slots[size_t(i)] = logSlot[size_t(i)] ? exp(parameters[i]) : parameters[i];
+    for (int i = 0; i < Kernel::Slots; ++i)
+      slots[size_t(i)] = logSlot[size_t(i)] ? exp(parameters[i]) : parameters[i];
     std::array<RgbT<T>, (Kernel::Terms > 0 ? Kernel::Terms : 1)> terms;
     RgbT<T> rest;
     kernel.eval(slots.data(), wi, wo, terms.data(), rest);
@@ -105,15 +107,16 @@ std::vector<Geometry> geometries() {
           {"retro", direction(70, 20), direction(69, 25)}};
 }
 
-template <typename Kernel>
-void expectGradientsMatch(const Kernel& kernel, const std::vector<double>& slots, const std::string& label,
-                          const std::vector<Geometry>& where = geometries()) {
+template <typename Kernel> void expectGradientsMatch(const Kernel& kernel, const std::vector<double>& slots,
+                                                     const std::string& label,
+                                                     const std::vector<Geometry>& where = geometries()) {
   for (const Geometry& g : where) {
     using Residuals = KernelResiduals<Kernel>;
     std::vector<double> parameters = slots;
-    ceres::AutoDiffCostFunction<Residuals, Residuals::Outputs, Kernel::Slots> cost(new Residuals(kernel, g.wi, g.wo, parameters.data()));
-    const ceres::GradientChecker checker(&cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr),
-                                         riddersOptions());
+    ceres::AutoDiffCostFunction<Residuals, Residuals::Outputs, Kernel::Slots> cost(
+        new Residuals(kernel, g.wi, g.wo, parameters.data()));
+    const ceres::GradientChecker checker(
+        &cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), riddersOptions());
     ceres::GradientChecker::ProbeResults results;
     std::vector<double*> blocks{parameters.data()};
     EXPECT_TRUE(checker.Probe(blocks.data(), Precision, &results))
@@ -170,7 +173,8 @@ TEST(KernelGradients, Ward) {
 
 TEST(KernelGradients, AshikhminShirley) {
   expectGradientsMatch(AshikhminShirleyKernel{}, {100.0, 100.0, 0.05, 0.04, 0.03}, "ashikhmin-shirley");
-  expectGradientsMatch(AshikhminShirleyKernel{}, {10.0, 1000.0, 0.9, 0.5, 0.2}, "ashikhmin-shirley anisotropic");
+  expectGradientsMatch(AshikhminShirleyKernel{}, {10.0, 1000.0, 0.9, 0.5, 0.2},
+                       "ashikhmin-shirley anisotropic");
   expectGradientsMatch(NganAshikhminShirleyKernel{}, {0.3, 500.0}, "ngan-ashikhmin-shirley");
   expectGradientsMatch(NganAshikhminShirleyKernel{}, {0.05, 90000.0}, "ngan-ashikhmin-shirley sharp",
                        tinyRoughnessGeometries());
@@ -179,7 +183,8 @@ TEST(KernelGradients, AshikhminShirley) {
 TEST(KernelGradients, NganCookTorrance) {
   expectGradientsMatch(NganCookTorranceKernel{}, {0.2, 0.1}, "cook-torrance 0.1");
   expectGradientsMatch(NganCookTorranceKernel{}, {0.9, 0.6}, "cook-torrance 0.6");
-  expectGradientsMatch(NganCookTorranceKernel{}, {0.1, 0.001}, "cook-torrance 0.001", tinyRoughnessGeometries());
+  expectGradientsMatch(NganCookTorranceKernel{}, {0.1, 0.001}, "cook-torrance 0.001",
+                       tinyRoughnessGeometries());
 }
 
 TEST(KernelGradients, Conductor) {

@@ -60,9 +60,11 @@ std::vector<double> probePoint(const FitModel& model) {
   return x;
 }
 
-void expectRowsMatchNumericDerivatives(const std::string& spec, bool perChannel, Metric metric, int lobes = 1) {
+void expectRowsMatchNumericDerivatives(const std::string& spec, bool perChannel, Metric metric,
+                                       int lobes = 1) {
   const FitModel model(parseModelSpec(spec, lobes), perChannel);
-  const BrdfSamples samples = cellSamples(GroundTruth(publishedFit("gold-metallic-paint", "ngan_cooktorrance.fit")), 1);
+  const BrdfSamples samples =
+      cellSamples(GroundTruth(publishedFit("gold-metallic-paint", "ngan_cooktorrance.fit")), 1);
   const MetricSamples prepared(samples, metric);
   const BrdfLeastSquares problem(model, prepared, nullptr, 1);
   // Samples spread over the table: the first theta_h rows (highlight) and the rest.
@@ -71,8 +73,8 @@ void expectRowsMatchNumericDerivatives(const std::string& spec, bool perChannel,
     SampleResiduals cost(problem, begin, begin + 20, x);
     ceres::NumericDiffOptions numeric;  // Ridders from a relative step of 1e-3 (kernel_gradient_test.cpp)
     numeric.ridders_relative_initial_step_size = 1e-3;
-    const ceres::GradientChecker checker(&cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr),
-                                         numeric);
+    const ceres::GradientChecker checker(
+        &cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), numeric);
     ceres::GradientChecker::ProbeResults results;
     double* blocks[] = {x.data()};
     // 1e-4: a row mixes O(1) derivatives with a lobe's tail whose derivatives are 1e-10 of the
@@ -91,9 +93,9 @@ TEST(ResidualRows, MatchNumericDerivativesForEveryMetric) {
 
 TEST(ResidualRows, MatchWithPerChannelTiedAndRepeatedShapes) {
   expectRowsMatchNumericDerivatives("lambertian+ngan-cook-torrance", true, Metric::LowLog);
-  expectRowsMatchNumericDerivatives("lafortune", false, Metric::Ngan);                       // cy tied to cx
+  expectRowsMatchNumericDerivatives("lafortune", false, Metric::Ngan);  // cy tied to cx
   expectRowsMatchNumericDerivatives(R"({"type":"blinn-phong","kd":0.1})", true, Metric::CubeRoot);  // kd held
-  expectRowsMatchNumericDerivatives("lambertian+conductor", false, Metric::LowL2, 2);      // two lobes
+  expectRowsMatchNumericDerivatives("lambertian+conductor", false, Metric::LowL2, 2);  // two lobes
 }
 
 // The compressed block reproduces the full problem's cost, gradient and J^T J.

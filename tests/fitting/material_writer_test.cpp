@@ -14,7 +14,8 @@ std::vector<double> pointOf(const FitModel& model, double scale) {
   std::vector<double> x = model.startValues();
   for (size_t j = 0; j < x.size(); ++j) {
     const FitParameter& p = model.parameters()[j];
-    if (p.role == ParameterRole::Scale) x[j] = scale * (1.0 - 0.2 * std::max(p.channel, 0));
+    if (p.role == ParameterRole::Scale)
+      x[j] = scale * (1.0 - 0.2 * std::max(p.channel, 0));
     else if (p.channel >= 0 && p.key != "albedo" && p.key != "rs" && p.key != "baseColor")
       x[j] = std::min(p.upper, x[j] * (1.0 + 0.3 * p.channel));  // per-channel shapes that differ
   }
@@ -35,7 +36,8 @@ void expectWrittenMaterialMatches(const std::string& spec, bool perChannel, doub
     const Rgb f = bsdf->eval(wi, wo);
     for (int c = 0; c < 3; ++c)
       ASSERT_NEAR(f[c], expected[c], 1e-12 * std::max(1.0, std::abs(expected[c])))
-          << spec << (perChannel ? " per channel" : "") << " channel " << c << "\n" << written.material->dump();
+          << spec << (perChannel ? " per channel" : "") << " channel " << c << "\n"
+          << written.material->dump();
   }
 }
 
@@ -44,7 +46,8 @@ TEST(MaterialWriter, WrittenMaterialEvaluatesToTheFittedModel) {
   expectWrittenMaterialMatches("lambertian+ngan-ward", true, 0.25);
   expectWrittenMaterialMatches("lambertian+ngan-ashikhmin-shirley", false, 0.2);
   expectWrittenMaterialMatches("lambertian+conductor", false, 0.4);
-  expectWrittenMaterialMatches(R"(lambertian+{"type":"conductor","distribution":"beckmann","metal":"Cu"})", true, 0.3);
+  expectWrittenMaterialMatches(R"(lambertian+{"type":"conductor","distribution":"beckmann","metal":"Cu"})",
+                               true, 0.3);
   expectWrittenMaterialMatches("lambertian+conductor", false, 0.2, 3);
   expectWrittenMaterialMatches("blinn-phong", false, 0.4);
   expectWrittenMaterialMatches("blinn-phong", true, 0.2, 2);

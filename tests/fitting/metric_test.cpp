@@ -75,8 +75,10 @@ TEST(Metric, SlopeIsTheDerivativeOfTheTransform) {
     const Metric metric = *parseMetric(name);
     for (const double f : {1e-3, 0.2, 5.0}) {
       const double h = 1e-6 * f;
-      const double numeric = (metricTransform(metric, f + h, 0.7) - metricTransform(metric, f - h, 0.7)) / (2 * h);
-      EXPECT_NEAR(metricSlope(metric, f, 0.7), numeric, 1e-7 * std::abs(numeric) + 1e-12) << name << " f " << f;
+      const double numeric =
+          (metricTransform(metric, f + h, 0.7) - metricTransform(metric, f - h, 0.7)) / (2 * h);
+      EXPECT_NEAR(metricSlope(metric, f, 0.7), numeric, 1e-7 * std::abs(numeric) + 1e-12)
+          << name << " f " << f;
     }
   }
 }

@@ -11,20 +11,22 @@
 // wider than binomial).
 #include <gtest/gtest.h>
 
-#include "fitting_test_support.h"
 #include "fitting/least_squares.h"
+#include "fitting_test_support.h"
 #include "materials/measured/measurement_synthesis.h"
 
 namespace scatterlab::fitting::test {
 namespace {
 
 // The chi-square quantile by Wilson & Hilferty 1931: k (1 - 2/(9k) + z sqrt(2/(9k)))^3.
-double chiSquareQuantile(double k, double z) { return k * std::pow(1.0 - 2.0 / (9.0 * k) + z * std::sqrt(2.0 / (9.0 * k)), 3.0); }
+double chiSquareQuantile(double k, double z) {
+  return k * std::pow(1.0 - 2.0 / (9.0 * k) + z * std::sqrt(2.0 / (9.0 * k)), 3.0);
+}
 
 const std::vector<json>& truth() {
-  static const std::vector<json> t{json{{"type", "lambertian"}, {"albedo", {0.2, 0.3, 0.4}}},
-                                   json{{"type", "ngan-cook-torrance"}, {"albedo", {0.2, 0.15, 0.1}}, {"eta", 0.4},
-                                        {"roughness", 0.15}}};
+  static const std::vector<json> t{
+      json{{"type", "lambertian"}, {"albedo", {0.2, 0.3, 0.4}}},
+      json{{"type", "ngan-cook-torrance"}, {"albedo", {0.2, 0.15, 0.1}}, {"eta", 0.4}, {"roughness", 0.15}}};
   return t;
 }
 
@@ -86,8 +88,9 @@ void expectCalibrated(Metric metric, double sigma0) {
   EXPECT_GT(rate1, 0.45) << rate1;
   EXPECT_LT(rate1, 0.90) << rate1;
   EXPECT_GT(rate2, 0.85) << rate2;
-  std::printf("%s: sum of d^2 over %d seeds %.1f (chi^2_%g: mean %g), within 1 sd %.0f%%, within 2 sd %.0f%%\n",
-              toString(metric).c_str(), Seeds, c.mahalanobis, dof, dof, 100 * rate1, 100 * rate2);
+  std::printf(
+      "%s: sum of d^2 over %d seeds %.1f (chi^2_%g: mean %g), within 1 sd %.0f%%, within 2 sd %.0f%%\n",
+      toString(metric).c_str(), Seeds, c.mahalanobis, dof, dof, 100 * rate1, 100 * rate2);
 }
 
 class NoiseCoverage : public ::testing::TestWithParam<Metric> {};

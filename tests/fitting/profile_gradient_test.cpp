@@ -50,7 +50,9 @@ template <typename Profile> struct LogParameters {
     for (int i = 0; i < ParameterCount; ++i) p[size_t(i)] = logarithmic[size_t(i)] ? exp(u[i]) : u[i];
     return p;
   }
-  template <typename T> T cumulative(const T* u, double r) const { return profile.cumulative(parameters(u).data(), r); }
+  template <typename T> T cumulative(const T* u, double r) const {
+    return profile.cumulative(parameters(u).data(), r);
+  }
   template <typename T> T operator()(const T* u, double r) const { return profile(parameters(u).data(), r); }
   std::vector<double> toLogarithms(std::vector<double> p) const {
     for (int i = 0; i < ParameterCount; ++i)
@@ -66,7 +68,9 @@ template <typename Profile> LogParameters<Profile> allLogarithmic(const Profile&
 
 struct BurleyAlbedoAndLength {
   static constexpr int ParameterCount = 2;  // A, d
-  template <typename T> T cumulative(const T* p, double r) const { return burleyCumulative(p[0], p[1], T(r)); }
+  template <typename T> T cumulative(const T* p, double r) const {
+    return burleyCumulative(p[0], p[1], T(r));
+  }
 };
 
 struct JensenDipoleCoefficients {
@@ -105,13 +109,14 @@ template <typename Residual, int K>
 bool gradientMatches(Residual* residual, std::vector<double> parameters, const std::string& label,
                      double precision = Precision, std::string* log = nullptr) {
   ceres::AutoDiffCostFunction<Residual, 1, K> cost(residual);
-  const ceres::GradientChecker checker(&cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr),
-                                       riddersOptions());
+  const ceres::GradientChecker checker(
+      &cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), riddersOptions());
   ceres::GradientChecker::ProbeResults results;
   double* blocks[] = {parameters.data()};
   const bool ok = checker.Probe(blocks, precision, &results);
   for (const double r : results.residuals) EXPECT_TRUE(std::isfinite(r)) << label;
-  if (log) *log = "max relative error " + std::to_string(results.maximum_relative_error) + "\n" + results.error_log;
+  if (log)
+    *log = "max relative error " + std::to_string(results.maximum_relative_error) + "\n" + results.error_log;
   return ok;
 }
 
@@ -119,7 +124,8 @@ template <typename Residual, int K>
 void expectGradientMatches(Residual* residual, std::vector<double> parameters, const std::string& label,
                            double precision = Precision) {
   std::string log;
-  EXPECT_TRUE((gradientMatches<Residual, K>(residual, std::move(parameters), label, precision, &log))) << label << ": " << log;
+  EXPECT_TRUE((gradientMatches<Residual, K>(residual, std::move(parameters), label, precision, &log)))
+      << label << ": " << log;
 }
 
 // Annuli from the centre to the tail (mm; mean free paths ~1).
@@ -128,8 +134,9 @@ const std::vector<std::pair<double, double>>& annuli() {
   return a;
 }
 
-template <typename Profile>
-void expectAnnulusGradients(const Profile& plain, const std::vector<double>& parameters, const std::string& name) {
+template <typename Profile> void expectAnnulusGradients(const Profile& plain,
+                                                        const std::vector<double>& parameters,
+                                                        const std::string& name) {
   constexpr int K = Profile::ParameterCount;
   const LogParameters<Profile> profile = allLogarithmic(plain);
   const std::vector<double> u = profile.toLogarithms(parameters);
@@ -146,8 +153,10 @@ void expectAnnulusGradients(const Profile& plain, const std::vector<double>& par
 TEST(ProfileGradients, BurleyShapeFactor) {
   for (const double A : {0.2, 0.8, 0.99}) {
     const BurleyShapeProfile profile{A, 1.0};
-    expectAnnulusGradients(profile, {burleyShapeFactor(BurleyFit::Searchlight, A)}, "burley s, A " + std::to_string(A));
-    expectAnnulusGradients(BurleyPowerAndShapeProfile{1.0}, {0.9 * A, burleyShapeFactor(BurleyFit::Searchlight, A)},
+    expectAnnulusGradients(profile, {burleyShapeFactor(BurleyFit::Searchlight, A)},
+                           "burley s, A " + std::to_string(A));
+    expectAnnulusGradients(BurleyPowerAndShapeProfile{1.0},
+                           {0.9 * A, burleyShapeFactor(BurleyFit::Searchlight, A)},
                            "burley (P, s), A " + std::to_string(A));
   }
 }
@@ -183,8 +192,8 @@ TEST(ProfileGradients, ADroppedDerivativeIsCaught) {
     const double area = Pi * (r1 * r1 - r0 * r0);
     const double model = (profile.cumulative(p.data(), r1) - profile.cumulative(p.data(), r0)) / area;
     using Residual = detail::RadialAnnulusResidual<BurleyWithoutLengthDerivative>;
-    EXPECT_FALSE((gradientMatches<Residual, 2>(new Residual{&profile, r0, r1, area, 1.1 * model, 1.0 / model}, p,
-                                               "control")))
+    EXPECT_FALSE((gradientMatches<Residual, 2>(new Residual{&profile, r0, r1, area, 1.1 * model, 1.0 / model},
+                                               p, "control")))
         << "[" << r0 << ", " << r1 << "]";
   }
 }

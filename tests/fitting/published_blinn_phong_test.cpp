@@ -19,7 +19,8 @@ namespace {
 
 std::map<std::string, double> lobeWidths(const std::string& file, const std::string& key) {
   std::map<std::string, double> out;
-  for (const PublishedFit& fit : readPublishedFits(std::filesystem::path(SCATTERLAB_DATA_DIR) / "published-fits" / file))
+  for (const PublishedFit& fit :
+       readPublishedFits(std::filesystem::path(SCATTERLAB_DATA_DIR) / "published-fits" / file))
     out[fit.name] = fit.lobeParameters.at(key).get<double>();
   return out;
 }

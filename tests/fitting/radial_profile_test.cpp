@@ -53,7 +53,8 @@ RadialFitOptions startingFarAway() {
 
 // `fit(options)` from the distant start with each weighting recovers the truth (d = 0.8,
 // A = 0.6) to 1e-8 relative: the data are noise-free, so only convergence limits the error.
-template <typename Fit> void expectRecoversTheTruth(const Fit& fit, std::initializer_list<RadialWeighting> weightings) {
+template <typename Fit>
+void expectRecoversTheTruth(const Fit& fit, std::initializer_list<RadialWeighting> weightings) {
   for (const RadialWeighting weighting : weightings) {
     RadialFitOptions options = startingFarAway();
     options.weighting = weighting;
@@ -72,7 +73,8 @@ TEST(RadialProfile, TheProfileIntegratesToAlbedo) {
   QuadratureOptions options;
   options.relativeTolerance = 1e-10;
   const double total = adaptiveSimpson(
-      [&](double r) { return r > 0 ? 2.0 * Pi * r * BurleyProfile{}(p, r) : 0.6 / (2.0 * 0.8); }, 0.0, 60.0 * 0.8, options);
+      [&](double r) { return r > 0 ? 2.0 * Pi * r * BurleyProfile{}(p, r) : 0.6 / (2.0 * 0.8); }, 0.0,
+      60.0 * 0.8, options);
   EXPECT_NEAR(total, 0.6, 1e-7);
 }
 
@@ -83,7 +85,8 @@ TEST(RadialProfile, GradientCheckOfTheProfileFunctor) {
     ceres::AutoDiffCostFunction<Residual, 1, 2> cost(new Residual{&profile, r, 0.1, 1.0});
     ceres::NumericDiffOptions numeric;
     numeric.ridders_relative_initial_step_size = 1e-3;  // as in kernel_gradient_test.cpp
-    const ceres::GradientChecker checker(&cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), numeric);
+    const ceres::GradientChecker checker(
+        &cost, static_cast<const std::vector<const ceres::Manifold*>*>(nullptr), numeric);
     std::vector<double> p{0.8, 0.6};
     double* blocks[] = {p.data()};
     ceres::GradientChecker::ProbeResults results;
@@ -96,8 +99,9 @@ TEST(RadialProfile, GradientCheckOfTheProfileFunctor) {
 TEST(RadialProfile, RecoversDiffusionLengthAndAlbedoFromNoiseFreeValues) {
   const std::vector<double> r = radii();
   const std::vector<double> values = tabulate(0.8, 0.6, r);
-  expectRecoversTheTruth([&](const RadialFitOptions& o) { return fitRadialProfile(BurleyProfile{}, r, values, o); },
-                         {RadialWeighting::Plain, RadialWeighting::Area, RadialWeighting::Relative});
+  expectRecoversTheTruth(
+      [&](const RadialFitOptions& o) { return fitRadialProfile(BurleyProfile{}, r, values, o); },
+      {RadialWeighting::Plain, RadialWeighting::Area, RadialWeighting::Relative});
 }
 
 // With 2% multiplicative noise and the Relative weighting (whose weights are then the inverse
@@ -129,8 +133,9 @@ TEST(RadialProfile, ErrorBarsCoverTheTruthUnderNoise) {
       within2 += std::abs(z) <= 2.0;
     }
   }
-  std::printf("sum of squared standardised errors over %d seeds: %.1f (expected about %d); within 2 sd: %d of %d\n", Seeds,
-              sum, 2 * Seeds, within2, 2 * Seeds);
+  std::printf(
+      "sum of squared standardised errors over %d seeds: %.1f (expected about %d); within 2 sd: %d of %d\n",
+      Seeds, sum, 2 * Seeds, within2, 2 * Seeds);
   EXPECT_GT(sum, 0.25 * 2 * Seeds);
   EXPECT_LT(sum, 2.5 * 2 * Seeds);
   EXPECT_GE(within2, int(0.8 * 2 * Seeds));
@@ -144,20 +149,24 @@ TEST(RadialProfile, RecoversFromNoiseFreeAnnulusAverages) {
   const double truth[2] = {0.8, 0.6};
   std::vector<double> means;
   for (size_t k = 0; k + 1 < edges.size(); ++k)
-    means.push_back((BurleyProfile{}.cumulative(truth, edges[k + 1]) - BurleyProfile{}.cumulative(truth, edges[k])) /
-                    (Pi * (sqr(edges[k + 1]) - sqr(edges[k]))));
-  expectRecoversTheTruth([&](const RadialFitOptions& o) { return fitRadialAnnuli(BurleyProfile{}, edges, means, o); },
-                         {RadialWeighting::Plain, RadialWeighting::Area, RadialWeighting::Radius, RadialWeighting::Relative});
+    means.push_back(
+        (BurleyProfile{}.cumulative(truth, edges[k + 1]) - BurleyProfile{}.cumulative(truth, edges[k])) /
+        (Pi * (sqr(edges[k + 1]) - sqr(edges[k]))));
+  expectRecoversTheTruth(
+      [&](const RadialFitOptions& o) { return fitRadialAnnuli(BurleyProfile{}, edges, means, o); },
+      {RadialWeighting::Plain, RadialWeighting::Area, RadialWeighting::Radius, RadialWeighting::Relative});
 }
 
 TEST(RadialProfile, AnnulusInputIsChecked) {
   const std::vector<double> edges{0.0, 0.5, 1.0, 2.0, 4.0}, means{1.0, 0.5, 0.1, 0.01};
   RadialFitOptions options = startingFarAway();
-  EXPECT_THROW(fitRadialAnnuli(BurleyProfile{}, std::span(edges).first(4), means, options), std::invalid_argument);
+  EXPECT_THROW(fitRadialAnnuli(BurleyProfile{}, std::span(edges).first(4), means, options),
+               std::invalid_argument);
   const std::vector<double> unordered{0.0, 1.0, 0.5, 2.0, 4.0};
   EXPECT_THROW(fitRadialAnnuli(BurleyProfile{}, unordered, means, options), std::invalid_argument);
-  EXPECT_THROW(fitRadialAnnuli(BurleyProfile{}, std::span(edges).first(2), std::span(means).first(1), options),
-               std::invalid_argument);
+  EXPECT_THROW(
+      fitRadialAnnuli(BurleyProfile{}, std::span(edges).first(2), std::span(means).first(1), options),
+      std::invalid_argument);
 }
 
 TEST(RadialProfile, BadInputIsRefused) {
@@ -166,7 +175,8 @@ TEST(RadialProfile, BadInputIsRefused) {
   RadialFitOptions options = startingFarAway();
   EXPECT_THROW(fitRadialProfile(BurleyProfile{}, std::span(r).first(1), std::span(values).first(1), options),
                std::invalid_argument);
-  EXPECT_THROW(fitRadialProfile(BurleyProfile{}, r, std::span(values).first(10), options), std::invalid_argument);
+  EXPECT_THROW(fitRadialProfile(BurleyProfile{}, r, std::span(values).first(10), options),
+               std::invalid_argument);
   options.start = {1.0};
   EXPECT_THROW(fitRadialProfile(BurleyProfile{}, r, values, options), std::invalid_argument);
 }

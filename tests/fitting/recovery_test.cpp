@@ -53,25 +53,41 @@ void expectRecovered(const Case& c, Metric metric = Metric::Ngan) {
 
 TEST(Recovery, DiffuseModels) {
   expectRecovered({"lambertian", {json{{"type", "lambertian"}, {"albedo", {0.2, 0.5, 0.7}}}}, ""});
-  expectRecovered({"oren-nayar", {json{{"type", "oren-nayar"}, {"albedo", {0.3, 0.5, 0.6}}, {"sigma", 0.4}}}, ""});
+  expectRecovered(
+      {"oren-nayar", {json{{"type", "oren-nayar"}, {"albedo", {0.3, 0.5, 0.6}}, {"sigma", 0.4}}}, ""});
   expectRecovered({"eon", {json{{"type", "eon"}, {"albedo", {0.4, 0.6, 0.8}}, {"roughness", 0.6}}}, ""});
 }
 
 TEST(Recovery, PhongFamily) {
-  expectRecovered({"phong", {json{{"type", "phong"}, {"kd", {0.3, 0.2, 0.1}}, {"ks", {0.2, 0.3, 0.4}}, {"exponent", 40}}}, ""});
   expectRecovered(
-      {"blinn-phong", {json{{"type", "blinn-phong"}, {"kd", {0.3, 0.2, 0.1}}, {"ks", {0.05, 0.06, 0.07}}, {"exponent", 300}}}, ""});
+      {"phong",
+       {json{{"type", "phong"}, {"kd", {0.3, 0.2, 0.1}}, {"ks", {0.2, 0.3, 0.4}}, {"exponent", 40}}},
+       ""});
+  expectRecovered(
+      {"blinn-phong",
+       {json{
+           {"type", "blinn-phong"}, {"kd", {0.3, 0.2, 0.1}}, {"ks", {0.05, 0.06, 0.07}}, {"exponent", 300}}},
+       ""});
 }
 
 TEST(Recovery, MicrofacetLobesWithLambertian) {
   const json diffuse{{"type", "lambertian"}, {"albedo", {0.25, 0.15, 0.05}}};
-  expectRecovered({"ngan-cook-torrance",
-                   {diffuse, json{{"type", "ngan-cook-torrance"}, {"albedo", {0.2, 0.15, 0.1}}, {"eta", 0.3}, {"roughness", 0.08}}},
-                   ""});
-  expectRecovered({"ngan-ward", {diffuse, json{{"type", "ngan-ward"}, {"albedo", {0.05, 0.06, 0.07}}, {"roughness", 0.12}}}, ""});
-  expectRecovered({"ward", {diffuse, json{{"type", "ward"}, {"albedo", {0.3, 0.2, 0.25}}, {"alpha", 0.15}}}, ""});
+  expectRecovered(
+      {"ngan-cook-torrance",
+       {diffuse,
+        json{
+            {"type", "ngan-cook-torrance"}, {"albedo", {0.2, 0.15, 0.1}}, {"eta", 0.3}, {"roughness", 0.08}}},
+       ""});
+  expectRecovered(
+      {"ngan-ward",
+       {diffuse, json{{"type", "ngan-ward"}, {"albedo", {0.05, 0.06, 0.07}}, {"roughness", 0.12}}},
+       ""});
+  expectRecovered(
+      {"ward", {diffuse, json{{"type", "ward"}, {"albedo", {0.3, 0.2, 0.25}}, {"alpha", 0.15}}}, ""});
   expectRecovered({"ngan-ashikhmin-shirley",
-                   {diffuse, json{{"type", "ngan-ashikhmin-shirley"}, {"albedo", {0.2, 0.3, 0.1}}, {"fresnelReflectance", 0.3},
+                   {diffuse, json{{"type", "ngan-ashikhmin-shirley"},
+                                  {"albedo", {0.2, 0.3, 0.1}},
+                                  {"fresnelReflectance", 0.3},
                                   {"sharpness", 800}}},
                    ""});
 }
@@ -83,11 +99,15 @@ TEST(Recovery, ConductorScaleAndRoughness) {
     const json lobe{{"type", "conductor"}, {"distribution", distribution}, {"alpha", 0.07}, {"metal", "Cu"}};
     const json lambertian{{"type", "lambertian"}, {"albedo", {0.1, 0.2, 0.3}}};
     const Rgb scale(0.6, 0.5, 0.4);
-    const json blend{{"type", "blend"}, {"weight", {scale.x, scale.y, scale.z}},
+    const json blend{{"type", "blend"},
+                     {"weight", {scale.x, scale.y, scale.z}},
                      {"materials", {lobe, json{{"type", "lambertian"}, {"albedo", 0.0}}}}};
     const FitModel model(
-        parseModelSpec(json{{"type", "conductor"}, {"metal", "Cu"}, {"distribution", distribution}}.dump() + "+lambertian"), false);
-    const FitResult result = fitBrdf(model, cellSamples(GroundTruth({blend, lambertian}), 2), quickOptions(Metric::Ngan));
+        parseModelSpec(json{{"type", "conductor"}, {"metal", "Cu"}, {"distribution", distribution}}.dump() +
+                       "+lambertian"),
+        false);
+    const FitResult result =
+        fitBrdf(model, cellSamples(GroundTruth({blend, lambertian}), 2), quickOptions(Metric::Ngan));
     EXPECT_TRUE(result.final.converged) << distribution;
     EXPECT_NEAR(parameterValue(model, result.x, "conductor.alpha"), 0.07, Tolerance * 0.07) << distribution;
     EXPECT_NEAR(parameterValue(model, result.x, "conductor.scale.r"), 0.6, Tolerance * 0.6) << distribution;
@@ -98,7 +118,10 @@ TEST(Recovery, ConductorScaleAndRoughness) {
 
 TEST(Recovery, AshikhminShirleyPaperModel) {
   expectRecovered({"ashikhmin-shirley",
-                   {json{{"type", "ashikhmin-shirley"}, {"exponent", 200}, {"rs", {0.05, 0.06, 0.07}}, {"rd", {0.5, 0.4, 0.3}}}},
+                   {json{{"type", "ashikhmin-shirley"},
+                         {"exponent", 200},
+                         {"rs", {0.05, 0.06, 0.07}},
+                         {"rd", {0.5, 0.4, 0.3}}}},
                    ""});
 }
 
@@ -108,9 +131,12 @@ TEST(Recovery, AshikhminShirleyPaperModel) {
 // specular, specularTint). So Disney is identifiable only with metallic held; fitted, the one
 // exact degeneracy is reported.
 const json& disneyTruth() {
-  static const json disney{{"type", "disney"},     {"baseColor", {0.6, 0.4, 0.1}}, {"metallic", 0.3},  {"subsurface", 0.4},
-                           {"specular", 0.5},       {"specularTint", 0.3},           {"roughness", 0.4}, {"sheen", 0.5},
-                           {"sheenTint", 0.4},      {"clearcoat", 0.6},              {"clearcoatGloss", 0.7}};
+  static const json disney{{"type", "disney"},     {"baseColor", {0.6, 0.4, 0.1}},
+                           {"metallic", 0.3},      {"subsurface", 0.4},
+                           {"specular", 0.5},      {"specularTint", 0.3},
+                           {"roughness", 0.4},     {"sheen", 0.5},
+                           {"sheenTint", 0.4},     {"clearcoat", 0.6},
+                           {"clearcoatGloss", 0.7}};
   return disney;
 }
 
@@ -120,7 +146,8 @@ TEST(Recovery, DisneyWithMetallicHeld) {
 
 TEST(Recovery, DisneyWithMetallicFittedReportsItsDegeneracy) {
   const FitModel model(parseModelSpec("disney"), false);
-  const FitResult result = fitBrdf(model, cellSamples(GroundTruth(std::vector<json>{disneyTruth()}), 2), quickOptions(Metric::Ngan));
+  const FitResult result = fitBrdf(model, cellSamples(GroundTruth(std::vector<json>{disneyTruth()}), 2),
+                                   quickOptions(Metric::Ngan));
   EXPECT_TRUE(result.final.converged);
   EXPECT_LT(result.final.finalCost, 1e-12 * result.starts.front().initialCost);  // fits the data exactly
   EXPECT_TRUE(result.rankDeficient);
@@ -134,8 +161,9 @@ TEST(Recovery, DisneyWithMetallicFittedReportsItsDegeneracy) {
 // factor cancels): kd, ks, the exponent and the ratio Cxy / Cz are recovered, and the fit
 // reports the one combination the data cannot fix.
 TEST(Recovery, LafortuneUpToTheScaleOfC) {
-  const json truth{{"type", "lafortune"}, {"kd", {0.2, 0.3, 0.1}}, {"ks", {0.3, 0.2, 0.1}}, {"cx", -0.8}, {"cy", -0.8},
-                   {"cz", 0.7},          {"exponent", 25}};
+  const json truth{
+      {"type", "lafortune"}, {"kd", {0.2, 0.3, 0.1}}, {"ks", {0.3, 0.2, 0.1}}, {"cx", -0.8}, {"cy", -0.8},
+      {"cz", 0.7},           {"exponent", 25}};
   const FitModel model(parseModelSpec("lafortune"), false);
   const FitResult result = recover({"lafortune", {truth}, ""}, model);
   EXPECT_TRUE(result.final.converged) << result.final.message;
@@ -145,7 +173,8 @@ TEST(Recovery, LafortuneUpToTheScaleOfC) {
     const double expected = truthValue({truth}, model, p);
     EXPECT_NEAR(result.x[j], expected, Tolerance * expected) << p.name;
   }
-  const double ratio = parameterValue(model, result.x, "lafortune.cx") / parameterValue(model, result.x, "lafortune.cz");
+  const double ratio =
+      parameterValue(model, result.x, "lafortune.cx") / parameterValue(model, result.x, "lafortune.cz");
   EXPECT_NEAR(ratio, -0.8 / 0.7, Tolerance * 0.8 / 0.7);
   EXPECT_TRUE(result.rankDeficient);
   ASSERT_FALSE(result.unidentified.empty());
@@ -155,10 +184,11 @@ TEST(Recovery, LafortuneUpToTheScaleOfC) {
 
 // Every metric finds the same optimum on noise-free data from the model itself.
 TEST(Recovery, EveryMetricRecoversTheTruth) {
-  const Case c{"cook-torrance",
-               {json{{"type", "lambertian"}, {"albedo", {0.1, 0.2, 0.3}}},
-                json{{"type", "ngan-cook-torrance"}, {"albedo", {0.3, 0.2, 0.1}}, {"eta", 0.5}, {"roughness", 0.2}}},
-               ""};
+  const Case c{
+      "cook-torrance",
+      {json{{"type", "lambertian"}, {"albedo", {0.1, 0.2, 0.3}}},
+       json{{"type", "ngan-cook-torrance"}, {"albedo", {0.3, 0.2, 0.1}}, {"eta", 0.5}, {"roughness", 0.2}}},
+      ""};
   for (const std::string& metric : metricNames()) {
     SCOPED_TRACE(metric);
     expectRecovered(c, *parseMetric(metric));
@@ -169,15 +199,17 @@ TEST(Recovery, EveryMetricRecoversTheTruth) {
 // the same model recovers the published parameters within 1%.
 class PublishedRecovery : public ::testing::TestWithParam<std::string> {};
 
-void expectPublishedRecovered(const std::string& name, const std::string& file, const std::string& spec,
-                              const std::function<double(const std::vector<json>&, const FitParameter&)>& truthOf) {
+void expectPublishedRecovered(
+    const std::string& name, const std::string& file, const std::string& spec,
+    const std::function<double(const std::vector<json>&, const FitParameter&)>& truthOf) {
   const std::vector<json> truth = publishedFit(name, file);
   const FitModel model(parseModelSpec(spec), false);
   const FitResult result = fitBrdf(model, cellSamples(GroundTruth(truth), 2), quickOptions(Metric::Ngan));
   EXPECT_TRUE(result.final.converged) << name << " " << file << ": " << result.final.message;
   for (size_t j = 0; j < model.parameterCount(); ++j) {
     const double expected = truthOf(truth, model.parameters()[j]);
-    EXPECT_NEAR(result.x[j], expected, 0.01 * std::abs(expected)) << name << " " << file << ": " << model.parameters()[j].name;
+    EXPECT_NEAR(result.x[j], expected, 0.01 * std::abs(expected))
+        << name << " " << file << ": " << model.parameters()[j].name;
   }
 }
 
@@ -191,15 +223,16 @@ TEST_P(PublishedRecovery, CookTorranceWardAndBlinnPhongLines) {
   expectPublishedRecovered(name, "ngan_ward.fit", "lambertian+ngan-ward", sameNames);
   // The Blinn-Phong line is a Lambertian plus blinn-phong with kd = 0: fitted as blinn-phong,
   // whose kd is the Lambertian's albedo (both albedo / pi).
-  expectPublishedRecovered(name, "ngan_blinnphong.fit", "blinn-phong", [](const std::vector<json>& truth, const FitParameter& p) {
-    const json& v = p.key == "kd" ? truth[0]["albedo"] : truth[1][p.key];
-    return v.is_array() ? v[size_t(std::max(p.channel, 0))].get<double>() : v.get<double>();
-  });
+  expectPublishedRecovered(
+      name, "ngan_blinnphong.fit", "blinn-phong", [](const std::vector<json>& truth, const FitParameter& p) {
+        const json& v = p.key == "kd" ? truth[0]["albedo"] : truth[1][p.key];
+        return v.is_array() ? v[size_t(std::max(p.channel, 0))].get<double>() : v.get<double>();
+      });
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, PublishedRecovery,
-                         ::testing::Values("alum-bronze", "gold-metallic-paint", "red-specular-plastic", "nickel",
-                                           "pink-felt"));
+                         ::testing::Values("alum-bronze", "gold-metallic-paint", "red-specular-plastic",
+                                           "nickel", "pink-felt"));
 
 }  // namespace
 }  // namespace scatterlab::fitting::test

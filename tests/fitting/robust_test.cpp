@@ -9,9 +9,9 @@ namespace scatterlab::fitting::test {
 namespace {
 
 const std::vector<json>& truth() {
-  static const std::vector<json> t{json{{"type", "lambertian"}, {"albedo", {0.2, 0.3, 0.4}}},
-                                   json{{"type", "ngan-cook-torrance"}, {"albedo", {0.2, 0.15, 0.1}}, {"eta", 0.3},
-                                        {"roughness", 0.1}}};
+  static const std::vector<json> t{
+      json{{"type", "lambertian"}, {"albedo", {0.2, 0.3, 0.4}}},
+      json{{"type", "ngan-cook-torrance"}, {"albedo", {0.2, 0.15, 0.1}}, {"eta", 0.3}, {"roughness", 0.1}}};
   return t;
 }
 
@@ -38,7 +38,8 @@ TEST(RobustLoss, OutliersPullThePlainFitButNotTheRobustOnes) {
     options.robust = *parseRobustLoss(name);
     const FitResult result = fitBrdf(model, samples, options);
     const double robust = worstRelativeError(model, result.x);
-    std::printf("%-8s (scale %.3g): worst relative parameter error %.4f\n", name.c_str(), result.robustScale, robust);
+    std::printf("%-8s (scale %.3g): worst relative parameter error %.4f\n", name.c_str(), result.robustScale,
+                robust);
     EXPECT_TRUE(result.final.converged) << name;
     EXPECT_GT(result.robustScale, 0) << name;
     EXPECT_LT(robust, 0.1) << name;          // measured 0.017 to 0.048

@@ -24,8 +24,11 @@ namespace {
 using namespace render_test;
 
 constexpr double Alpha = 0.09;
-const nlohmann::json PerfectGgx = {
-    {"type", "conductor"}, {"distribution", "ggx"}, {"alpha", Alpha}, {"eta", {1, 1, 1}}, {"k", {1e8, 1e8, 1e8}}};
+const nlohmann::json PerfectGgx = {{"type", "conductor"},
+                                   {"distribution", "ggx"},
+                                   {"alpha", Alpha},
+                                   {"eta", {1, 1, 1}},
+                                   {"k", {1e8, 1e8, 1e8}}};
 
 // The mask's mean of E(mu) over each pixel's footprint (4 x 4 midpoints).
 double maskedAlbedoByQuadrature(const PinholeCamera& camera, const SilhouetteMask& mask) {
@@ -78,9 +81,9 @@ TEST_P(ConductorLoss, MaskedFurnaceMeanMatchesQuadratureOfTheAlbedo) {
   // 5 standard errors of the render, plus the table's accuracy.
   EXPECT_NEAR(rendered, expected, 5.0 * error + 2e-4) << "standard error " << error;
   const double cosineWeighted = WhiteMicrofacetAlbedo::shared(MicrofacetType::Ggx, Alpha, Alpha)->average();
-  std::cout << "[ loss     ] " << pixels << " masked pixels at " << Size << "x" << Size << ": render " << rendered
-            << " +- " << error << ", quadrature " << expected << "; cosine-weighted average " << cosineWeighted
-            << "; Cycles 0.9818 (256x256)\n";
+  std::cout << "[ loss     ] " << pixels << " masked pixels at " << Size << "x" << Size << ": render "
+            << rendered << " +- " << error << ", quadrature " << expected << "; cosine-weighted average "
+            << cosineWeighted << "; Cycles 0.9818 (256x256)\n";
 }
 
 std::string resolutionName(const testing::TestParamInfo<Resolution>& info) {

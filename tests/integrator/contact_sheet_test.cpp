@@ -37,7 +37,8 @@ TEST(BitmapFont, DrawsDistinctGlyphs) {
     EXPECT_GT(inkIn(image, 0, 0, GlyphWidth, GlyphHeight), 0) << c;
   }
   for (size_t i = 0; i < drawn.size(); ++i)
-    for (size_t j = i + 1; j < drawn.size(); ++j) EXPECT_NE(drawn[i], drawn[j]) << chars[i] << " and " << chars[j];
+    for (size_t j = i + 1; j < drawn.size(); ++j)
+      EXPECT_NE(drawn[i], drawn[j]) << chars[i] << " and " << chars[j];
 }
 
 TEST(ContactSheet, PlacesImagesAndLabels) {

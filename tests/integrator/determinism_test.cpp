@@ -14,8 +14,9 @@ RenderResult renderPreview(int threads, uint64_t seed) {
   // Glass on the checkered ground under a map: long paths through interiors, NEE on the
   // ground, Russian roulette, a Gaussian filter (rejection sampling draws a varying number
   // of random numbers).
-  const Scene scene = makePresetScene(ScenePreset::Preview, makeBsdf({{"type", "rough-dielectric"}, {"alpha", 0.2}}),
-                                      Environment::fromMap(smoothSkyMap(16)), 40, 30);
+  const Scene scene =
+      makePresetScene(ScenePreset::Preview, makeBsdf({{"type", "rough-dielectric"}, {"alpha", 0.2}}),
+                      Environment::fromMap(smoothSkyMap(16)), 40, 30);
   RenderSettings settings = settingsWith(8, seed);
   settings.threads = threads;
   settings.filter = PixelFilter::gaussian();

@@ -62,7 +62,8 @@ TEST(Environment, SamplesAgreeWithEvalAndPdf) {
     const auto s = env.sample(rng.uniform2D());
     ASSERT_TRUE(s);
     EXPECT_NEAR(glm::length(s->direction), 1.0, 1e-12);
-    EXPECT_NEAR(glm::length(s->radiance - env.eval(s->direction)), 0.0, 1e-9 * (1 + glm::length(s->radiance)));
+    EXPECT_NEAR(glm::length(s->radiance - env.eval(s->direction)), 0.0,
+                1e-9 * (1 + glm::length(s->radiance)));
     EXPECT_NEAR(s->pdf, env.pdf(s->direction), 1e-9 * s->pdf);
   }
 }
@@ -149,15 +150,19 @@ auto drawFrom(const Environment& env) {
 
 TEST(EnvironmentChiSquare, SamplerDrawsItsPdf) {
   const Environment env = Environment::fromMap(patchyMap(16), 1.0, Transform::rotate(40.0, Vec3d(1, 0, 1)));
-  const auto r = sphericalChiSquareTest(drawFrom(env), [&](const Vec3d& w) { return env.pdf(w); }, kitOptions());
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      drawFrom(env), [&](const Vec3d& w) { return env.pdf(w); }, kitOptions());
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 // Negative control: samples of the turned map against the density of the unturned one.
 TEST(EnvironmentChiSquare, RejectsAMismatchedPdf) {
-  const Environment turned = Environment::fromMap(patchyMap(16), 1.0, Transform::rotate(40.0, Vec3d(1, 0, 1)));
+  const Environment turned =
+      Environment::fromMap(patchyMap(16), 1.0, Transform::rotate(40.0, Vec3d(1, 0, 1)));
   const Environment plain = Environment::fromMap(patchyMap(16));
-  const auto r = sphericalChiSquareTest(drawFrom(turned), [&](const Vec3d& w) { return plain.pdf(w); }, kitOptions());
+  const auto r = sphericalChiSquareTest(
+      drawFrom(turned), [&](const Vec3d& w) { return plain.pdf(w); }, kitOptions());
   EXPECT_FALSE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue;
 }
 

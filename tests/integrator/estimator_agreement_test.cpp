@@ -45,7 +45,8 @@ Scene testScene(const json& material, double lightScale) {
   // Subtends ~30 degrees from the sphere: broad enough for BSDF sampling alone to find it.
   scene.addSphereLight(Sphere{Vec3d(-2.0, -1.5, 1.5), 0.8}, Rgb(3.0, 2.5, 2.0) * lightScale);
   scene.addSun(SunLight(Vec3d(1, -0.5, 1.2), Rgb(1.0, 0.9, 0.8) * lightScale, 10.0));
-  scene.setCamera(PinholeCamera::lookAt(Vec3d(0, -4.5, 1.2), Vec3d(0, 0, -0.2), Vec3d(0, 0, 1), 45.0, Size, Size));
+  scene.setCamera(
+      PinholeCamera::lookAt(Vec3d(0, -4.5, 1.2), Vec3d(0, 0, -0.2), Vec3d(0, 0, 1), 45.0, Size, Size));
   return scene;
 }
 
@@ -103,9 +104,10 @@ TEST_P(EstimatorAgreement, BsdfLightAndMisAgree) {
   for (const auto& [name, images] : pairs)
     for (int channel = 0; channel < 3; ++channel) {
       const Agreement r = compareBlocks(*images.first, *images.second, channel);
-      EXPECT_GE(r.pValue, Threshold) << name << " channel " << channel << ": chi2 " << r.chi2 << " dof " << r.dof;
-      std::cout << "[ agree    ] " << GetParam().name << " " << name << " channel " << channel << ": chi2 " << r.chi2
-                << " dof " << r.dof << " p " << r.pValue << "\n";
+      EXPECT_GE(r.pValue, Threshold) << name << " channel " << channel << ": chi2 " << r.chi2 << " dof "
+                                     << r.dof;
+      std::cout << "[ agree    ] " << GetParam().name << " " << name << " channel " << channel << ": chi2 "
+                << r.chi2 << " dof " << r.dof << " p " << r.pValue << "\n";
     }
 }
 
@@ -118,19 +120,21 @@ TEST_P(EstimatorAgreement, RejectsAFivePercentBias) {
   for (int channel = 0; channel < 3; ++channel) {
     const Agreement r = compareBlocks(biased, bsdf, channel);
     EXPECT_LT(r.pValue, Threshold) << "channel " << channel << ": chi2 " << r.chi2 << " dof " << r.dof;
-    std::cout << "[ control  ] " << GetParam().name << " channel " << channel << ": chi2 " << r.chi2 << " p " << r.pValue << "\n";
+    std::cout << "[ control  ] " << GetParam().name << " channel " << channel << ": chi2 " << r.chi2 << " p "
+              << r.pValue << "\n";
   }
 }
 
 std::string caseName(const testing::TestParamInfo<MaterialCase>& info) { return info.param.name; }
 INSTANTIATE_TEST_SUITE_P(Materials, EstimatorAgreement,
-                         testing::Values(MaterialCase{"rough_plastic", {{"type", "rough-plastic"},
-                                                                         {"alpha", 0.25},
-                                                                         {"diffuse", {0.6, 0.3, 0.2}}}}),
+                         testing::Values(MaterialCase{
+                             "rough_plastic",
+                             {{"type", "rough-plastic"}, {"alpha", 0.25}, {"diffuse", {0.6, 0.3, 0.2}}}}),
                          caseName);
 // Transmission through a rough sphere: long paths, slow under the sanitizers, which skip Grid/.
 INSTANTIATE_TEST_SUITE_P(Grid, EstimatorAgreement,
-                         testing::Values(MaterialCase{"rough_glass", {{"type", "rough-dielectric"}, {"alpha", 0.3}, {"eta", 1.5}}}),
+                         testing::Values(MaterialCase{
+                             "rough_glass", {{"type", "rough-dielectric"}, {"alpha", 0.3}, {"eta", 1.5}}}),
                          caseName);
 
 }  // namespace

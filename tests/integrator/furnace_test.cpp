@@ -39,7 +39,8 @@ struct LosslessCase {
 
 std::vector<LosslessCase> losslessCatalog() {
   const json perfect = {{"eta", {1, 1, 1}}, {"k", {1e8, 1e8, 1e8}}};
-  json ggxCompensated = {{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.3}, {"multiscatter", "kulla-conty"}};
+  json ggxCompensated = {
+      {"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.3}, {"multiscatter", "kulla-conty"}};
   ggxCompensated.update(perfect);
   json beckmannCompensated = ggxCompensated;
   beckmannCompensated["distribution"] = "beckmann";
@@ -52,10 +53,16 @@ std::vector<LosslessCase> losslessCatalog() {
       {"conductor-anisotropic-kulla-conty", anisotropic, 3e-3},
       {"dielectric", {{"type", "dielectric"}, {"eta", 1.5}}, 0.0, true},
       {"thin-dielectric", {{"type", "thin-dielectric"}, {"eta", 1.5}}, 0.0, true},
-      {"rough-plastic-white", {{"type", "rough-plastic"}, {"alpha", 0.2}, {"diffuse", 1.0}, {"eta", 1.5}}, 2e-4},
-      {"eon-white", {{"type", "eon"}, {"albedo", 1.0}, {"roughness", 0.7}, {"directional_albedo", "analytic"}}, 0.0},
+      {"rough-plastic-white",
+       {{"type", "rough-plastic"}, {"alpha", 0.2}, {"diffuse", 1.0}, {"eta", 1.5}},
+       2e-4},
+      {"eon-white",
+       {{"type", "eon"}, {"albedo", 1.0}, {"roughness", 0.7}, {"directional_albedo", "analytic"}},
+       0.0},
       {"blend-lambertian-conductor",
-       {{"type", "blend"}, {"weight", 0.4}, {"materials", {{{"type", "lambertian"}, {"albedo", 1.0}}, ggxCompensated}}},
+       {{"type", "blend"},
+        {"weight", 0.4},
+        {"materials", {{{"type", "lambertian"}, {"albedo", 1.0}}, ggxCompensated}}},
        2e-4},
   };
 }
@@ -64,7 +71,8 @@ class Furnace : public testing::TestWithParam<LosslessCase> {};
 
 TEST_P(Furnace, EveryPixelIsOne) {
   const LosslessCase& c = GetParam();
-  ASSERT_TRUE(makeBsdf(c.material)->isLossless()) << c.material.dump() << " is not lossless by its own account";
+  ASSERT_TRUE(makeBsdf(c.material)->isLossless())
+      << c.material.dump() << " is not lossless by its own account";
   const Scene scene = sphereScene(c.material, Environment::constant(Rgb(1.0)), 32);
   RenderSettings settings = settingsWith(128, 17);
   // A depth limit loses the light of paths still inside after it (grazing entries into glass
@@ -94,7 +102,8 @@ TEST_P(Furnace, EveryPixelIsOne) {
   EXPECT_GT(spherePixels, 100);
   EXPECT_EQ(failures, 0);
   // All non-background pixels together: their mean is 1 within 5 standard errors.
-  const int count = 3 * (32 * 32 - int(std::count(mask.regions.begin(), mask.regions.end(), PixelRegion::Background)));
+  const int count =
+      3 * (32 * 32 - int(std::count(mask.regions.begin(), mask.regions.end(), PixelRegion::Background)));
   const double mean = sum / count, error = std::sqrt(variance) / count;
   EXPECT_NEAR(mean, 1.0, Sigmas * error + c.modelTolerance) << "standard error " << error;
   EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);

@@ -72,7 +72,8 @@ void renderGrazing(const std::string& name, const json& material) {
   Scene rim;
   rim.addSphere(presetSphere(), rim.addMaterial(makeBsdf(material)));
   rim.setEnvironment(env);
-  rim.setCamera(PinholeCamera::lookAt(Vec3d(0, -4, 0), Vec3d(4.0 / std::sqrt(15.0), 0, 0), Vec3d(0, 0, 1), 2.0, 16, 16));
+  rim.setCamera(PinholeCamera::lookAt(Vec3d(0, -4, 0), Vec3d(4.0 / std::sqrt(15.0), 0, 0), Vec3d(0, 0, 1),
+                                      2.0, 16, 16));
   expectFinite(render(rim, settings), name + " at the sphere's rim");
   // A ground plane seen from just above, and a sphere lying on it.
   Scene ground;

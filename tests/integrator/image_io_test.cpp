@@ -45,7 +45,9 @@ void expectMentions(const std::string& text, const std::vector<std::string>& fra
 TEST(Exr, RoundTripsFloatRgbAndLayers) {
   const fs::path path = scratchPath("layers") += ".exr";
   const Image color = gradient(7, 5), albedo = gradient(7, 5, 0.5f), normal = gradient(7, 5, -1.0f);
-  writeExr(path, {{"", {"R", "G", "B"}, &color}, {"albedo", {"R", "G", "B"}, &albedo}, {"normal", {"X", "Y", "Z"}, &normal}});
+  writeExr(path, {{"", {"R", "G", "B"}, &color},
+                  {"albedo", {"R", "G", "B"}, &albedo},
+                  {"normal", {"X", "Y", "Z"}, &normal}});
   const Image back = readExrRgb(path);
   EXPECT_EQ(back.width(), 7);
   EXPECT_EQ(back.height(), 5);
@@ -63,7 +65,10 @@ TEST(Exr, FailedWriteLeavesNothing) {
   // (a non-empty directory) fails: the temporary is removed, nothing else is touched.
   const fs::path folder = scratchPath("occupied");
   fs::create_directories(folder / "out.exr" / "inside");
-  expectMentions(errorOf([&] { writeExr(folder / "out.exr", {{"", {"R", "G", "B"}, &color}}); }), {"out.exr"});
+  expectMentions(errorOf([&] {
+                   writeExr(folder / "out.exr", {{"", {"R", "G", "B"}, &color}});
+                 }),
+                 {"out.exr"});
   EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1);
   EXPECT_TRUE(fs::is_directory(folder / "out.exr" / "inside"));
 }
@@ -71,7 +76,7 @@ TEST(Exr, FailedWriteLeavesNothing) {
 TEST(Png, EncodesSrgbWithExposure) {
   EXPECT_DOUBLE_EQ(srgbEncode(0.0), 0.0);
   EXPECT_DOUBLE_EQ(srgbEncode(1.0), 1.0);
-  EXPECT_NEAR(srgbEncode(0.18), 0.4614, 1e-4);          // middle grey
+  EXPECT_NEAR(srgbEncode(0.18), 0.4614, 1e-4);           // middle grey
   EXPECT_NEAR(srgbEncode(0.002), 12.92 * 0.002, 1e-15);  // the linear toe
   Image image(3, 1);
   image.setRgb(0, 0, Rgb(0.25, 0.5, 2.0));
@@ -80,7 +85,7 @@ TEST(Png, EncodesSrgbWithExposure) {
   const std::vector<uint8_t> plain = toSrgb8(image), brighter = toSrgb8(image, 1.0);
   EXPECT_EQ(plain[0], uint8_t(std::lround(255 * srgbEncode(0.25))));
   EXPECT_EQ(brighter[0], uint8_t(std::lround(255 * srgbEncode(0.5))));  // +1 stop = x2
-  EXPECT_EQ(plain[2], 255);                                            // clamped
+  EXPECT_EQ(plain[2], 255);                                             // clamped
   EXPECT_EQ(plain[3], 0);
   EXPECT_EQ(plain[5], 255);
 }
@@ -93,7 +98,9 @@ TEST(Png, WritesAValidHeader) {
   ASSERT_GT(bytes.size(), 24u);
   const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   EXPECT_TRUE(std::equal(signature, signature + 8, bytes.begin()));
-  const auto be32 = [&](size_t at) { return (bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3]; };
+  const auto be32 = [&](size_t at) {
+    return (bytes[at] << 24) | (bytes[at + 1] << 16) | (bytes[at + 2] << 8) | bytes[at + 3];
+  };
   EXPECT_EQ(be32(16), 9);  // IHDR width
   EXPECT_EQ(be32(20), 4);  // IHDR height
   fs::remove(path);
@@ -116,7 +123,8 @@ TEST(EnvironmentMapFile, ReadsAGoodMap) {
 
 TEST(EnvironmentMapFile, ReadsTheShippedMaps) {
   for (const char* name : {"city", "courtyard", "forest", "studio"}) {
-    const EnvironmentMapFile file = readEnvironmentMap(fs::path(SCATTERLAB_DATA_DIR) / "envmaps" / (std::string(name) + ".exr"));
+    const EnvironmentMapFile file =
+        readEnvironmentMap(fs::path(SCATTERLAB_DATA_DIR) / "envmaps" / (std::string(name) + ".exr"));
     EXPECT_EQ(file.image.width(), 1024) << name;
     EXPECT_EQ(file.image.height(), 512) << name;
     EXPECT_NO_THROW(Environment::fromMap(file.image)) << name;
@@ -140,7 +148,8 @@ TEST(EnvironmentMapFile, RejectsFilesThatAreNotExr) {
   const fs::path truncated = scratchPath("truncated") += ".exr";
   fs::copy_file(whole, truncated);
   fs::resize_file(truncated, fs::file_size(whole) / 2);
-  expectMentions(errorOf([&] { readEnvironmentMap(truncated); }), {truncated.string(), "cannot be read as OpenEXR"});
+  expectMentions(errorOf([&] { readEnvironmentMap(truncated); }),
+                 {truncated.string(), "cannot be read as OpenEXR"});
 }
 
 TEST(EnvironmentMapFile, RejectsFilesWithoutColour) {
@@ -152,7 +161,8 @@ TEST(EnvironmentMapFile, RejectsFilesWithoutColour) {
 
 TEST(EnvironmentMapFile, RejectsMapsThatAreNotEquirectangular) {
   const fs::path path = writeMap("square", Image(16, 16, 3, 1.0f));
-  expectMentions(errorOf([&] { readEnvironmentMap(path); }), {path.string(), "16 x 16", "width = 2 x height"});
+  expectMentions(errorOf([&] { readEnvironmentMap(path); }),
+                 {path.string(), "16 x 16", "width = 2 x height"});
 }
 
 TEST(EnvironmentMapFile, RejectsNonFiniteValues) {
@@ -160,7 +170,8 @@ TEST(EnvironmentMapFile, RejectsNonFiniteValues) {
     Image image = render_test::smoothSkyMap(8);
     image.pixel(5, 3)[2] = bad;
     const fs::path path = writeMap("nonfinite", image);
-    expectMentions(errorOf([&] { readEnvironmentMap(path); }), {path.string(), "pixel (5, 3) channel B", "finite"});
+    expectMentions(errorOf([&] { readEnvironmentMap(path); }),
+                   {path.string(), "pixel (5, 3) channel B", "finite"});
   }
 }
 
@@ -168,7 +179,8 @@ TEST(EnvironmentMapFile, RejectsNegativeValuesAndClampsRoundOff) {
   Image image = render_test::smoothSkyMap(8);
   image.pixel(4, 2)[1] = -0.5f;
   const fs::path bad = writeMap("negative", image);
-  expectMentions(errorOf([&] { readEnvironmentMap(bad); }), {bad.string(), "pixel (4, 2) channel G is -0.5", ">= 0"});
+  expectMentions(errorOf([&] { readEnvironmentMap(bad); }),
+                 {bad.string(), "pixel (4, 2) channel G is -0.5", ">= 0"});
   // Out-of-gamut round-off, far below 1% of the mean: set to 0 and counted.
   image.pixel(4, 2)[1] = -1e-4f;
   const EnvironmentMapFile file = readEnvironmentMap(writeMap("roundoff", image));

@@ -39,9 +39,10 @@ TEST(SphereLightChiSquare, SamplerDrawsItsPdf) {
   const SphereLight light{Sphere{Vec3d(1.0, 2.0, 0.5), 0.9}, Rgb(1.0)};
   const Vec3d p(0.2, -0.3, 0.1);
   const auto sample = [&](const Vec2d& u) { return light.sample(p, u); };
-  const auto r = sphericalChiSquareTest(drawWith(sample), [&](const Vec3d& w) { return coneDensity(light, p, w); },
-                                        kitOptions());
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      drawWith(sample), [&](const Vec3d& w) { return coneDensity(light, p, w); }, kitOptions());
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(SphereLightChiSquare, RejectsTheConeOfAnotherSphere) {
@@ -49,8 +50,8 @@ TEST(SphereLightChiSquare, RejectsTheConeOfAnotherSphere) {
   const SphereLight smaller{Sphere{Vec3d(1.0, 2.0, 0.5), 0.8}, Rgb(1.0)};
   const Vec3d p(0.2, -0.3, 0.1);
   const auto sample = [&](const Vec2d& u) { return light.sample(p, u); };
-  const auto r = sphericalChiSquareTest(drawWith(sample), [&](const Vec3d& w) { return coneDensity(smaller, p, w); },
-                                        kitOptions());
+  const auto r = sphericalChiSquareTest(
+      drawWith(sample), [&](const Vec3d& w) { return coneDensity(smaller, p, w); }, kitOptions());
   EXPECT_FALSE(r.passed);
 }
 
@@ -73,14 +74,17 @@ TEST(SphereLight, SamplesLieOnTheVisibleSurface) {
 TEST(SunChiSquare, SamplerDrawsItsPdf) {
   const SunLight sun(Vec3d(0.3, -0.5, 1.0), Rgb(1.0), 12.0);
   const auto sample = [&](const Vec2d& u) { return sun.sample(u); };
-  const auto r = sphericalChiSquareTest(drawWith(sample), [&](const Vec3d& w) { return sun.pdf(w); }, kitOptions());
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      drawWith(sample), [&](const Vec3d& w) { return sun.pdf(w); }, kitOptions());
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(SunChiSquare, RejectsAWiderCone) {
   const SunLight sun(Vec3d(0.3, -0.5, 1.0), Rgb(1.0), 12.0), wider(Vec3d(0.3, -0.5, 1.0), Rgb(1.0), 13.0);
   const auto sample = [&](const Vec2d& u) { return sun.sample(u); };
-  const auto r = sphericalChiSquareTest(drawWith(sample), [&](const Vec3d& w) { return wider.pdf(w); }, kitOptions());
+  const auto r = sphericalChiSquareTest(
+      drawWith(sample), [&](const Vec3d& w) { return wider.pdf(w); }, kitOptions());
   EXPECT_FALSE(r.passed);
 }
 

@@ -23,7 +23,8 @@ TEST(MaterialScene, ABsdfDescriptionBecomesABsdf) {
 }
 
 TEST(MaterialScene, ASubsurfaceDescriptionBecomesASubsurfaceMaterial) {
-  const RenderableMaterial material = makeRenderableMaterial(json{{"type", "subsurface"}, {"medium", "Skin1"}});
+  const RenderableMaterial material =
+      makeRenderableMaterial(json{{"type", "subsurface"}, {"medium", "Skin1"}});
   EXPECT_EQ(material.bsdf, nullptr);
   EXPECT_TRUE(material.subsurface.has_value());
 }
@@ -53,14 +54,15 @@ TEST(MaterialScene, BothKindsRenderOnThePresetSphere) {
   settings.samplesPerPixel = 1;
   settings.seed = 3;
   settings.threads = 1;
-  const Scene lambertian = makeMaterialScene(ScenePreset::MaterialSphere, json{{"type", "lambertian"}, {"albedo", 1.0}},
-                                             Environment::constant(Rgb(1.0)), 8, 8);
+  const Scene lambertian =
+      makeMaterialScene(ScenePreset::MaterialSphere, json{{"type", "lambertian"}, {"albedo", 1.0}},
+                        Environment::constant(Rgb(1.0)), 8, 8);
   const RenderResult white = render(lambertian, settings, {});
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) EXPECT_NEAR(white.color.rgb(x, y).x, 1.0, 1e-6) << x << ", " << y;
-  const Scene skin = makeMaterialScene(ScenePreset::MaterialSphere,
-                                       makeRenderableMaterial(json{{"type", "subsurface"}, {"medium", "Skin1"}}),
-                                       SubsurfaceMode::RandomWalk, Environment::constant(Rgb(1.0)), 8, 8);
+  const Scene skin = makeMaterialScene(
+      ScenePreset::MaterialSphere, makeRenderableMaterial(json{{"type", "subsurface"}, {"medium", "Skin1"}}),
+      SubsurfaceMode::RandomWalk, Environment::constant(Rgb(1.0)), 8, 8);
   const RenderResult walked = render(skin, settings, {});
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) EXPECT_TRUE(std::isfinite(walked.color.rgb(x, y).x)) << x << ", " << y;

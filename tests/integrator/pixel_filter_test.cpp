@@ -40,8 +40,9 @@ Table2D expectedGaussian(double sigma, double radius) {
   const double width = 2 * radius / Bins;
   for (int cy = 0; cy < Bins; ++cy)
     for (int cx = 0; cx < Bins; ++cx)
-      expected(cy, cx) = Samples * truncatedNormalMass(-radius + cx * width, -radius + (cx + 1) * width, sigma, radius) *
-                         truncatedNormalMass(-radius + cy * width, -radius + (cy + 1) * width, sigma, radius);
+      expected(cy, cx) =
+          Samples * truncatedNormalMass(-radius + cx * width, -radius + (cx + 1) * width, sigma, radius) *
+          truncatedNormalMass(-radius + cy * width, -radius + (cy + 1) * width, sigma, radius);
   return expected;
 }
 
@@ -54,13 +55,15 @@ TEST(PixelFilter, BoxIsUniformOverThePixel) {
 
 TEST(PixelFilter, GaussianIsTheTruncatedNormal) {
   const PixelFilter filter = PixelFilter::gaussian(0.5, 1.5);
-  const auto r = chiSquareFromTables(observedOffsets(filter, 1.5), expectedGaussian(0.5, 1.5), Samples, Threshold);
+  const auto r =
+      chiSquareFromTables(observedOffsets(filter, 1.5), expectedGaussian(0.5, 1.5), Samples, Threshold);
   EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue;
 }
 
 TEST(PixelFilter, GaussianTestRejectsAnotherSigma) {
   const PixelFilter filter = PixelFilter::gaussian(0.5, 1.5);
-  const auto r = chiSquareFromTables(observedOffsets(filter, 1.5), expectedGaussian(0.52, 1.5), Samples, Threshold);
+  const auto r =
+      chiSquareFromTables(observedOffsets(filter, 1.5), expectedGaussian(0.52, 1.5), Samples, Threshold);
   EXPECT_FALSE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue;
 }
 

@@ -30,8 +30,10 @@ inline std::filesystem::path scratchPath(const std::string& stem) {
 }
 
 // The peers' material-sphere scene with `material` at width x height.
-inline Scene sphereScene(const nlohmann::json& material, const Environment& environment, int width, int height = 0) {
-  return makePresetScene(ScenePreset::MaterialSphere, makeBsdf(material), environment, width, height ? height : width);
+inline Scene sphereScene(const nlohmann::json& material, const Environment& environment, int width,
+                         int height = 0) {
+  return makePresetScene(ScenePreset::MaterialSphere, makeBsdf(material), environment, width,
+                         height ? height : width);
 }
 
 inline RenderSettings settingsWith(int spp, uint64_t seed, bool variance = true) {
@@ -65,7 +67,7 @@ inline Image patchyMap(int height = 16) {
     for (int x = 0; x < 2 * height; ++x) {
       Rgb v(0.2 + 0.1 * ((x * 7 + y * 3) % 5), 0.1 * (x % 3), 0.05 * (y % 4));
       if (y >= height / 2 && y < height / 2 + 2) v = Rgb(0.0);  // a black band below the horizon
-      if (x == 5 && y == 3) v = Rgb(200.0, 150.0, 100.0);      // a sun-like pixel
+      if (x == 5 && y == 3) v = Rgb(200.0, 150.0, 100.0);       // a sun-like pixel
       map.setRgb(x, y, v);
     }
   return map;

@@ -41,7 +41,9 @@ TEST(Scene, CheckerboardAlternatesModels) {
   const BsdfModel *evenModel = even.get(), *oddModel = odd.get();
   scene.addPlane(Plane{Vec3d(0.0), Vec3d(0, 0, 1), Vec3d(1, 0, 0)},
                  scene.addCheckerMaterial(std::move(even), std::move(odd), 0.5));
-  const auto modelAt = [&](double x, double y) { return scene.intersect({Vec3d(x, y, 1), Vec3d(0, 0, -1)})->model; };
+  const auto modelAt = [&](double x, double y) {
+    return scene.intersect({Vec3d(x, y, 1), Vec3d(0, 0, -1)})->model;
+  };
   EXPECT_EQ(modelAt(0.25, 0.25), evenModel);
   EXPECT_EQ(modelAt(0.75, 0.25), oddModel);
   EXPECT_EQ(modelAt(-0.25, 0.25), oddModel);
@@ -52,8 +54,9 @@ TEST(Scene, CheckerboardAlternatesModels) {
 TEST(Scene, PlacesSpheresBySimilarities) {
   Scene scene;
   const int grey = scene.addMaterial(std::make_unique<LambertianBsdf>(Rgb(0.5)));
-  scene.addSphere(Transform::translate(Vec3d(0, 5, 0)) * Transform::rotate(90, Vec3d(1, 0, 0)) * Transform::scale(2.0),
-                  grey);
+  scene.addSphere(
+      Transform::translate(Vec3d(0, 5, 0)) * Transform::rotate(90, Vec3d(1, 0, 0)) * Transform::scale(2.0),
+      grey);
   const auto hit = scene.intersect({Vec3d(0.0), Vec3d(0, 1, 0)});
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->t, 3.0, 1e-12);
@@ -90,8 +93,8 @@ TEST(ScenePresets, AreThePeersSceneAndThePreview) {
   EXPECT_EQ(findScenePreset("sphere"), ScenePreset::MaterialSphere);
   EXPECT_EQ(findScenePreset("preview"), ScenePreset::Preview);
   EXPECT_FALSE(findScenePreset("cornell"));
-  const Scene sphere = makePresetScene(ScenePreset::MaterialSphere, std::make_unique<LambertianBsdf>(Rgb(1.0)),
-                                       Environment(), 64, 48);
+  const Scene sphere = makePresetScene(ScenePreset::MaterialSphere,
+                                       std::make_unique<LambertianBsdf>(Rgb(1.0)), Environment(), 64, 48);
   EXPECT_EQ(sphere.shapeCount(), 1);
   EXPECT_EQ(sphere.camera().eye(), Vec3d(0, -4, 0));
   EXPECT_EQ(sphere.camera().fovDegrees(), 45.0);

@@ -94,7 +94,8 @@ TEST(SpawnRay, InternalReflectionsStayOnTheSphere) {
   const Sphere sphere{Vec3d(0.1, 0.2, -0.3), 1.0};
   Ray ray{sphere.center, glm::normalize(Vec3d(0.3, 1.0, 0.2))};
   ray.origin = sphere.center + glm::normalize(Vec3d(1.0, -0.2, 0.4)) * 0.999;  // near the wall
-  ray.direction = glm::normalize(glm::cross(ray.origin - sphere.center, Vec3d(0, 0, 1)) + 0.6 * (sphere.center - ray.origin));
+  ray.direction = glm::normalize(glm::cross(ray.origin - sphere.center, Vec3d(0, 0, 1)) +
+                                 0.6 * (sphere.center - ray.origin));
   for (int bounce = 0; bounce < 1000; ++bounce) {
     const double t = sphere.intersect(ray, 0.0, Infinity);
     ASSERT_LT(t, Infinity) << "escaped at bounce " << bounce;

@@ -32,7 +32,8 @@ TEST(SilhouetteMask, IsExrStatsMask) {
 }
 
 TEST(SilhouetteMask, StatisticsOfARegion) {
-  const PinholeCamera camera = PinholeCamera::lookAt(Vec3d(0, -4, 0), Vec3d(0.0), Vec3d(0, 0, 1), 45.0, 32, 32);
+  const PinholeCamera camera =
+      PinholeCamera::lookAt(Vec3d(0, -4, 0), Vec3d(0.0), Vec3d(0, 0, 1), 45.0, 32, 32);
   const SilhouetteMask mask = silhouetteMask(camera, presetSphere());
   Image image(32, 32);
   for (int y = 0; y < 32; ++y)

@@ -7,8 +7,8 @@
 
 #include "integrator/silhouette_mask.h"
 #include "materials/bssrdf/subsurface_registry.h"
-#include "validation/half_space_reference.h"
 #include "render_test_support.h"
+#include "validation/half_space_reference.h"
 
 namespace scatterlab {
 namespace {
@@ -17,8 +17,8 @@ using nlohmann::json;
 using namespace render_test;
 
 Scene subsurfaceSphere(const json& material, SubsurfaceMode mode, int side) {
-  return makePresetScene(ScenePreset::MaterialSphere, makeSubsurface(material), mode, Environment::constant(Rgb(1.0)),
-                         side, side);
+  return makePresetScene(ScenePreset::MaterialSphere, makeSubsurface(material), mode,
+                         Environment::constant(Rgb(1.0)), side, side);
 }
 
 // The mean over the sphere's pixels and the variance of that mean (pixel means independent).
@@ -49,13 +49,15 @@ SphereMean sphereMean(const Scene& scene, const RenderResult& result) {
 // background: a single lost walk among the ~1,000 per pixel would show as 1e-3.
 TEST(SubsurfaceRender, RandomWalkFurnaceRendersOne) {
   for (const double eta : {1.0, 1.3}) {
-    const json material{{"type", "subsurface"}, {"sigma_s", {4.0, 4.0, 4.0}}, {"sigma_a", {0.0, 0.0, 0.0}}, {"eta", eta}};
+    const json material{
+        {"type", "subsurface"}, {"sigma_s", {4.0, 4.0, 4.0}}, {"sigma_a", {0.0, 0.0, 0.0}}, {"eta", eta}};
     const Scene scene = subsurfaceSphere(material, SubsurfaceMode::RandomWalk, 16);
     const RenderResult result = render(scene, settingsWith(16, 5));
     EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);
     for (int y = 0; y < 16; ++y)
       for (int x = 0; x < 16; ++x)
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(result.color.rgb(x, y)[c], 1.0, 1e-6) << "eta " << eta << " pixel " << x << ", " << y;
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(result.color.rgb(x, y)[c], 1.0, 1e-6) << "eta " << eta << " pixel " << x << ", " << y;
   }
 }
 
@@ -66,14 +68,17 @@ TEST(SubsurfaceRender, RandomWalkFurnaceRendersOne) {
 // sphere's mean is below 1 by more than 4 of its standard errors.
 TEST(SubsurfaceRender, DiffusionFurnaceDeviationIsReported) {
   for (const char* profile : {"dipole", "better-dipole", "beam-diffusion", "burley"}) {
-    const json material{{"type", "subsurface"}, {"profile", profile}, {"sigma_s", {4.0, 4.0, 4.0}},
-                        {"sigma_a", {0.0, 0.0, 0.0}}, {"eta", 1.3}};
+    const json material{{"type", "subsurface"},
+                        {"profile", profile},
+                        {"sigma_s", {4.0, 4.0, 4.0}},
+                        {"sigma_a", {0.0, 0.0, 0.0}},
+                        {"eta", 1.3}};
     const Scene scene = subsurfaceSphere(material, SubsurfaceMode::Diffusion, 16);
     const RenderResult result = render(scene, settingsWith(256, 6));
     EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);
     const SphereMean m = sphereMean(scene, result);
-    std::printf("diffusion furnace, %-14s sphere mean %.4f +- %.4f (deviation from 1: %+.1f%%)\n", profile, m.mean.x,
-                std::sqrt(m.variance.x), 100.0 * (m.mean.x - 1.0));
+    std::printf("diffusion furnace, %-14s sphere mean %.4f +- %.4f (deviation from 1: %+.1f%%)\n", profile,
+                m.mean.x, std::sqrt(m.variance.x), 100.0 * (m.mean.x - 1.0));
     EXPECT_LT(m.mean.x, 1.0 - 4.0 * std::sqrt(m.variance.x)) << profile;
   }
 }
@@ -119,11 +124,13 @@ Comparison compareOnSkin(const char* profile, double scale) {
   out.diffusion = sphereMean(diffusion, render(diffusion, settingsWith(64, 7)));
   out.walk = sphereMean(walk, render(walk, settingsWith(64, 8)));
   for (int c = 0; c < 3; ++c)
-    std::printf("%-14s scale %3g %c: sphere: diffusion %.4f, walk %.4f, walk - diffusion %+.4f +- %.4f; half-space: "
-                "model %.4f, walk %.4f +- %.4f, walk - model %+.4f\n",
-                profile, scale, "RGB"[c], out.diffusion.mean[c], out.walk.mean[c], out.walk.mean[c] - out.diffusion.mean[c],
-                std::sqrt(out.diffusion.variance[c] + out.walk.variance[c]), out.halfSpaceModel[c], out.halfSpaceWalk[c],
-                out.halfSpaceStdError[c], out.halfSpaceWalk[c] - out.halfSpaceModel[c]);
+    std::printf(
+        "%-14s scale %3g %c: sphere: diffusion %.4f, walk %.4f, walk - diffusion %+.4f +- %.4f; half-space: "
+        "model %.4f, walk %.4f +- %.4f, walk - model %+.4f\n",
+        profile, scale, "RGB"[c], out.diffusion.mean[c], out.walk.mean[c],
+        out.walk.mean[c] - out.diffusion.mean[c], std::sqrt(out.diffusion.variance[c] + out.walk.variance[c]),
+        out.halfSpaceModel[c], out.halfSpaceWalk[c], out.halfSpaceStdError[c],
+        out.halfSpaceWalk[c] - out.halfSpaceModel[c]);
   return out;
 }
 
@@ -145,7 +152,8 @@ TEST(SubsurfaceRender, OnALargeSphereDiffusionDiffersFromTheWalkByTheModelsHalfS
     const Comparison c = compareOnSkin(profile, 300.0);
     for (int k = 0; k < 3; ++k) {
       const double predicted = c.halfSpaceWalk[k] - c.halfSpaceModel[k];
-      const double sigma = std::sqrt(c.diffusion.variance[k] + c.walk.variance[k] + sqr(c.halfSpaceStdError[k]));
+      const double sigma =
+          std::sqrt(c.diffusion.variance[k] + c.walk.variance[k] + sqr(c.halfSpaceStdError[k]));
       EXPECT_NEAR(c.walk.mean[k] - c.diffusion.mean[k], predicted, 4.0 * sigma + 0.02 * std::abs(predicted))
           << profile << " channel " << k;
     }
@@ -160,7 +168,8 @@ TEST(SubsurfaceRender, OnALargeSphereDiffusionDiffersFromTheWalkByTheModelsHalfS
 TEST(SubsurfaceRender, OnASmallSphereTheWalkShowsWhatDiffusionMisses) {
   const Comparison c = compareOnSkin("dipole", 10.0);
   const Rgb gap = c.walk.mean - c.diffusion.mean;
-  EXPECT_GT(gap.x, c.halfSpaceWalk.x - c.halfSpaceModel.x + 5.0 * std::sqrt(c.diffusion.variance.x + c.walk.variance.x));
+  EXPECT_GT(gap.x, c.halfSpaceWalk.x - c.halfSpaceModel.x +
+                       5.0 * std::sqrt(c.diffusion.variance.x + c.walk.variance.x));
   EXPECT_NEAR(gap.z, c.halfSpaceWalk.z - c.halfSpaceModel.z,
               4.0 * std::sqrt(c.diffusion.variance.z + c.walk.variance.z + sqr(c.halfSpaceStdError.z)));
 }

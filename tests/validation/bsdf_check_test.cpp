@@ -57,7 +57,8 @@ TEST(BsdfCheck, ImagesAreWrittenOnRequest) {
   std::filesystem::remove_all(*o.imageDir);
   runBsdfChecks(LambertianBsdf(Rgb(0.5)), "lambertian", o);
   for (const char* kind : {"observed", "expected", "residual", "consistency"})
-    EXPECT_TRUE(std::filesystem::exists(*o.imageDir / (std::string("lambertian_wi30_") + kind + ".png"))) << kind;
+    EXPECT_TRUE(std::filesystem::exists(*o.imageDir / (std::string("lambertian_wi30_") + kind + ".png")))
+        << kind;
   EXPECT_TRUE(std::filesystem::exists(*o.imageDir / "lambertian_wi30_tables.json"));
 }
 

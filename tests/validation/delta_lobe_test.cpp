@@ -20,7 +20,8 @@ ChiSquareOptions options() {
 TEST(DeltaLobe, CorrectMixtureOfMirrorAndDiffusePasses) {
   const testing::MirrorPlusDiffuse model(0.3);
   const auto r = bsdfChiSquareTest(model, directionFromDegrees(40, 30), options());
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(DeltaLobe, WrongDiscreteProbabilityIsRejected) {

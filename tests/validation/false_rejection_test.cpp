@@ -15,12 +15,14 @@ TEST(FalseRejection, RateMatchesSignificanceAndPValuesAreUniform) {
   const LambertianBsdf model(Rgb(0.6));
   const Vec3d wi = directionFromDegrees(35, 20);
   const SeedStudyResult study = repeatedSeedStudy(
-      bsdfDirectionSampler(model, wi), [&](const Vec3d& wo) { return model.pdf(wi, wo, TransportMode::Radiance); },
-      SphericalGrid{16, 32}, 20000, 400, 0.05, 1000);
+      bsdfDirectionSampler(model, wi),
+      [&](const Vec3d& wo) { return model.pdf(wi, wo, TransportMode::Radiance); }, SphericalGrid{16, 32},
+      20000, 400, 0.05, 1000);
   // Binomial(400, 0.05): mean 20, sd 4.36; accept within 3.5 sd.
   EXPECT_LT(std::abs(study.rejectionZ()), 3.5) << study.rejected << " rejections in " << study.runs;
   // Kolmogorov-Smirnov against U(0, 1): D_crit(n = 400, 0.001) = 1.95 / sqrt(400) = 0.0976.
-  EXPECT_LT(study.ksDistance(), 1.95 / std::sqrt(double(study.runs))) << "KS distance of p-values from uniform";
+  EXPECT_LT(study.ksDistance(), 1.95 / std::sqrt(double(study.runs)))
+      << "KS distance of p-values from uniform";
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ TEST(Heatmap, WritesPngOfExpectedSize) {
   EXPECT_EQ(header[1], 'P');
   EXPECT_EQ(header[2], 'N');
   EXPECT_EQ(header[3], 'G');
-  const auto be32 = [&](int o) { return (header[o] << 24) | (header[o + 1] << 16) | (header[o + 2] << 8) | header[o + 3]; };
+  const auto be32 = [&](int o) {
+    return (header[o] << 24) | (header[o + 1] << 16) | (header[o + 2] << 8) | header[o + 3];
+  };
   EXPECT_EQ(be32(16), 8 * 3);
   EXPECT_EQ(be32(20), 4 * 3);
   // No temporary file is left behind.

@@ -28,8 +28,8 @@ TEST_P(LambertianControls, AreRejected) {
   const Vec3d wi = directionFromDegrees(wiTheta, 30);
   const auto broken = makeNegativeControl(control, model, wi);
   const auto r = bsdfChiSquareTest(*broken, wi, options());
-  EXPECT_FALSE(r.passed) << toString(control) << " at wi " << wiTheta << ": chi2 " << r.statistic << " dof " << r.dof
-                         << " p " << r.pValue;
+  EXPECT_FALSE(r.passed) << toString(control) << " at wi " << wiTheta << ": chi2 " << r.statistic << " dof "
+                         << r.dof << " p " << r.pValue;
 }
 
 INSTANTIATE_TEST_SUITE_P(Kit, LambertianControls,
@@ -42,7 +42,8 @@ TEST(NegativeControls, CorrectLambertianPassesWithTheSameSettings) {
   const LambertianBsdf model(Rgb(0.8));
   for (double wiTheta : {0.0, 60.0}) {
     const auto r = bsdfChiSquareTest(model, directionFromDegrees(wiTheta, 30), options());
-    EXPECT_TRUE(r.passed) << "wi " << wiTheta << ": chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue;
+    EXPECT_TRUE(r.passed) << "wi " << wiTheta << ": chi2 " << r.statistic << " dof " << r.dof << " p "
+                          << r.pValue;
   }
 }
 
@@ -58,7 +59,8 @@ TEST(NegativeControls, NoOpControlIsRecognised) {
 
 TEST(NegativeControls, RoughnessMismatchNeedsItsSampler) {
   const LambertianBsdf model(Rgb(0.8));
-  EXPECT_THROW(makeNegativeControl(NegativeControl::RoughnessMismatch, model, Vec3d(0, 0, 1)), std::invalid_argument);
+  EXPECT_THROW(makeNegativeControl(NegativeControl::RoughnessMismatch, model, Vec3d(0, 0, 1)),
+               std::invalid_argument);
 }
 
 TEST(NegativeControls, SuiteReportsControlsAsRejected) {

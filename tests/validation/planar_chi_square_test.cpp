@@ -25,27 +25,31 @@ PlanarChiSquareOptions options() {
 }
 
 auto diskSampler(double scale) {
-  return [scale](CounterRng& rng) -> std::optional<Vec2d> { return scale * sampleConcentricDisk(rng.uniform2D()); };
+  return [scale](CounterRng& rng) -> std::optional<Vec2d> {
+    return scale * sampleConcentricDisk(rng.uniform2D());
+  };
 }
 
 TEST(PlanarChiSquare, AcceptsTheUniformDisk) {
-  const ChiSquareResult r =
-      planarChiSquareTest(diskSampler(1.0), [](const Vec2d& p) { return glm::length(p) < 1 ? InvPi : 0.0; },
-                          diskGrid(), options());
+  const ChiSquareResult r = planarChiSquareTest(
+      diskSampler(1.0), [](const Vec2d& p) { return glm::length(p) < 1 ? InvPi : 0.0; }, diskGrid(),
+      options());
   EXPECT_TRUE(r.passed) << r.statistic << " " << r.dof << " " << r.pValue << " " << r.failure;
 }
 
 TEST(PlanarChiSquare, RejectsADensityFivePercentHighOnHalfThePlane) {
   const ChiSquareResult r = planarChiSquareTest(
-      diskSampler(1.0), [](const Vec2d& p) { return glm::length(p) < 1 ? InvPi * (p.x > 0 ? 1.05 : 0.95) : 0.0; },
-      diskGrid(), options());
+      diskSampler(1.0),
+      [](const Vec2d& p) { return glm::length(p) < 1 ? InvPi * (p.x > 0 ? 1.05 : 0.95) : 0.0; }, diskGrid(),
+      options());
   EXPECT_FALSE(r.passed);
 }
 
 TEST(PlanarChiSquare, PointsBeyondTheOuterRingRejectAtOnce) {
   // Samples on a disk 2% larger than the density's support.
   const ChiSquareResult r = planarChiSquareTest(
-      diskSampler(1.02), [](const Vec2d& p) { return glm::length(p) < 1 ? InvPi : 0.0; }, diskGrid(), options());
+      diskSampler(1.02), [](const Vec2d& p) { return glm::length(p) < 1 ? InvPi : 0.0; }, diskGrid(),
+      options());
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.failure.find("pdf integrates to 0"), std::string::npos) << r.failure;
 }

@@ -37,12 +37,13 @@ ProfileComparison compare(const ScatteringMedium& medium, uint64_t paths) {
   options.seed = 3;
   const ProfileComparison c = compareProfilesWithWalk(medium, options);
   for (const ModelComparison& m : c.models)
-    std::printf("%-15s total error %+6.1f%% %+6.1f%% %+6.1f%%  profile error %5.1f%% %5.1f%% %5.1f%%  "
-                "(multiple only: total %+6.1f%% %+6.1f%% %+6.1f%%)\n",
-                toString(m.model).c_str(), 100 * m.errors.totalError.x, 100 * m.errors.totalError.y,
-                100 * m.errors.totalError.z, 100 * m.errors.profileError.x, 100 * m.errors.profileError.y,
-                100 * m.errors.profileError.z, 100 * m.errors.multipleTotalError.x, 100 * m.errors.multipleTotalError.y,
-                100 * m.errors.multipleTotalError.z);
+    std::printf(
+        "%-15s total error %+6.1f%% %+6.1f%% %+6.1f%%  profile error %5.1f%% %5.1f%% %5.1f%%  "
+        "(multiple only: total %+6.1f%% %+6.1f%% %+6.1f%%)\n",
+        toString(m.model).c_str(), 100 * m.errors.totalError.x, 100 * m.errors.totalError.y,
+        100 * m.errors.totalError.z, 100 * m.errors.profileError.x, 100 * m.errors.profileError.y,
+        100 * m.errors.profileError.z, 100 * m.errors.multipleTotalError.x,
+        100 * m.errors.multipleTotalError.y, 100 * m.errors.multipleTotalError.z);
   return c;
 }
 
@@ -72,7 +73,8 @@ TEST(ProfileComparison, TheBetterDipoleIsTheMultipleScatteringWithPrefactorAlpha
     }
     EXPECT_LT(highest / lowest - 1.0, 0.04 + 3.0 * std::sqrt(2.0) * worstNoise);
     const Rgb alphaPrime = medium.reducedAlbedo();
-    EXPECT_GT(std::max({alphaPrime.x, alphaPrime.y, alphaPrime.z}) / std::min({alphaPrime.x, alphaPrime.y, alphaPrime.z}),
+    EXPECT_GT(std::max({alphaPrime.x, alphaPrime.y, alphaPrime.z}) /
+                  std::min({alphaPrime.x, alphaPrime.y, alphaPrime.z}),
               1.4);
   }
 }
@@ -91,7 +93,8 @@ TEST(ProfileComparison, PhotonBeamDiffusionIsClosestBehindAFresnelBoundary) {
     EXPECT_LT(pbd[ch], 0.12) << ch;
     EXPECT_LT(c.noiseFloor[ch], 0.05) << ch;
     for (const ModelComparison& m : c.models) {
-      if (m.model != ProfileModel::BeamDiffusion) EXPECT_LT(pbd[ch], m.errors.profileError[ch]) << toString(m.model);
+      if (m.model != ProfileModel::BeamDiffusion)
+        EXPECT_LT(pbd[ch], m.errors.profileError[ch]) << toString(m.model);
     }
   }
 }

@@ -18,7 +18,9 @@ ChiSquareResult exponentialTest(double sampledRate, double claimedRate, int bins
   o.threshold = Threshold;
   const auto quantile = [claimedRate](double u) { return -std::log1p(-u) / claimedRate; };
   return radialChiSquareTest(
-      [sampledRate](CounterRng& rng) -> std::optional<double> { return -std::log1p(-rng.uniform()) / sampledRate; },
+      [sampledRate](CounterRng& rng) -> std::optional<double> {
+        return -std::log1p(-rng.uniform()) / sampledRate;
+      },
       [claimedRate](double r) { return claimedRate * std::exp(-claimedRate * r); },
       equalProbabilityEdges(quantile, bins), quantile(1 - 1e-12), o);
 }
@@ -29,15 +31,14 @@ TEST(RadialChiSquare, AcceptsACorrectSampler) {
   EXPECT_EQ(r.dof, 39);
 }
 
-TEST(RadialChiSquare, RejectsARateTwoPercentOff) {
-  EXPECT_FALSE(exponentialTest(2.04, 2.0).passed);
-}
+TEST(RadialChiSquare, RejectsARateTwoPercentOff) { EXPECT_FALSE(exponentialTest(2.04, 2.0).passed); }
 
 TEST(RadialChiSquare, RejectsInvalidRadii) {
   RadialChiSquareOptions o;
   o.sampleCount = 1000;
-  const ChiSquareResult r = radialChiSquareTest([](CounterRng&) -> std::optional<double> { return -1.0; },
-                                                [](double r) { return std::exp(-r); }, {0.0, 1.0, INFINITY}, 40.0, o);
+  const ChiSquareResult r =
+      radialChiSquareTest([](CounterRng&) -> std::optional<double> { return -1.0; },
+                          [](double r) { return std::exp(-r); }, {0.0, 1.0, INFINITY}, 40.0, o);
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.failure.find("invalid"), std::string::npos) << r.failure;
 }

@@ -12,15 +12,20 @@ class MirrorPlusDiffuse final : public BsdfModel {
  public:
   MirrorPlusDiffuse(double mirrorProbability, double claimedProbability)
       : p_(mirrorProbability), claimed_(claimedProbability), diffuse_(Rgb(1.0)) {}
-  explicit MirrorPlusDiffuse(double mirrorProbability) : MirrorPlusDiffuse(mirrorProbability, mirrorProbability) {}
+  explicit MirrorPlusDiffuse(double mirrorProbability)
+      : MirrorPlusDiffuse(mirrorProbability, mirrorProbability) {}
 
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const override {
     return (1 - p_) * diffuse_.eval(wi, wo);
   }
-  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return (1 - p_) * diffuse_.pdf(wi, wo); }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override {
+    return (1 - p_) * diffuse_.pdf(wi, wo);
+  }
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     if (wi.z <= 0) return std::nullopt;
-    if (uLobe < p_) return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), claimed_, LobeFlags::SpecularReflection};
+    if (uLobe < p_)
+      return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), claimed_, LobeFlags::SpecularReflection};
     auto s = diffuse_.sample(wi, uLobe, u);
     if (!s) return s;
     s->pdf *= 1 - p_;
@@ -42,7 +47,8 @@ class WrongWeightLambertian final : public BsdfModel {
   explicit WrongWeightLambertian(double factor) : factor_(factor), base_(Rgb(0.5)) {}
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.eval(wi, wo); }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.pdf(wi, wo); }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     auto s = base_.sample(wi, uLobe, u);
     if (s) s->weight *= factor_;
     return s;
@@ -62,7 +68,8 @@ class HalfSupportSampler final : public BsdfModel {
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override {
     return wo.y > 0 ? 2.0 * base_.pdf(wi, wo) : 0.0;
   }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     auto s = base_.sample(wi, uLobe, u);
     if (!s || s->wo.y == 0) return std::nullopt;
     s->wo.y = std::abs(s->wo.y);
@@ -84,7 +91,8 @@ class NonReciprocalDiffuse final : public BsdfModel {
     return base_.eval(wi, wo) * (1.0 + 0.5 * wi.x);
   }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.pdf(wi, wo); }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     auto s = base_.sample(wi, uLobe, u);
     if (s) s->weight *= 1.0 + 0.5 * wi.x;
     return s;

@@ -81,7 +81,8 @@ template <typename Distribution> class ModeBlindDielectric final : public BsdfMo
     return model_.eval(wi, wo, TransportMode::Importance);
   }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return model_.pdf(wi, wo); }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     return model_.sample(wi, uLobe, u, TransportMode::Importance);
   }
   LobeFlags flags() const override { return model_.flags(); }
@@ -120,7 +121,8 @@ TEST(TransmissionKit, VeachsRelationNeedsTheIndicesOfTheLightsSide) {
   const RoughDielectricBsdf<BeckmannDistribution<double>> model(BeckmannDistribution<double>(0.4, 0.4), 1.5);
   const Vec3d wi = directionFromDegrees(20, 0), wo = directionFromDegrees(170, 180);  // outside -> inside
   const double ni = 1.0, no = 1.5;
-  const double forward = model.eval(wi, wo, TransportMode::Radiance).x, backward = model.eval(wo, wi, TransportMode::Radiance).x;
+  const double forward = model.eval(wi, wo, TransportMode::Radiance).x,
+               backward = model.eval(wo, wi, TransportMode::Radiance).x;
   ASSERT_GT(forward, 0.0);
   EXPECT_GT(relativeDifference(forward / (no * no), backward / (ni * ni)), 0.5);
   EXPECT_LT(relativeDifference(forward / (ni * ni), backward / (no * no)), 1e-12);
@@ -134,7 +136,8 @@ TEST(TransmissionKit, VeachsRelationNeedsTheIndicesOfTheLightsSide) {
 // integrateCells (chi_square.h) resolve it; without them the kit integrated its pdf to 1.03
 // (64 x 128 cells, 2e5 samples).
 TEST(TransmissionKit, NarrowRefractedLobeAtThePoleIsIntegrated) {
-  const RoughDielectricBsdf<BeckmannDistribution<double>> model(BeckmannDistribution<double>(0.001, 0.001), 1.02);
+  const RoughDielectricBsdf<BeckmannDistribution<double>> model(BeckmannDistribution<double>(0.001, 0.001),
+                                                                1.02);
   BsdfCheckOptions o = quickOptions({0});
   o.thetaBins = 16;
   o.phiBins = 32;
@@ -153,7 +156,8 @@ class TailBelow final : public BsdfModel {
     return wo.z < 0 ? Rgb(tail_) : base_.eval(wi, wo);
   }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.pdf(wi, wo); }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     return base_.sample(wi, uLobe, u);
   }
   LobeFlags flags() const override { return base_.flags(); }

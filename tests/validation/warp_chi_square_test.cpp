@@ -20,24 +20,26 @@ ChiSquareOptions options(int thetaBins = 64, int phiBins = 128) {
   return o;
 }
 
-template <typename Warp>
-auto drawWith(Warp warp, double pdf) {
+template <typename Warp> auto drawWith(Warp warp, double pdf) {
   return [=](CounterRng& rng) -> std::optional<DirectionSample> {
     return DirectionSample{warp(rng.uniform2D()), pdf};
   };
 }
 
 TEST(WarpChiSquare, UniformSphere) {
-  const auto r = sphericalChiSquareTest(drawWith(sampleUniformSphere, uniformSpherePdf()),
-                                        [](const Vec3d&) { return uniformSpherePdf(); }, options());
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      drawWith(sampleUniformSphere, uniformSpherePdf()), [](const Vec3d&) { return uniformSpherePdf(); },
+      options());
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(WarpChiSquare, UniformHemisphere) {
-  const auto r = sphericalChiSquareTest(drawWith(sampleUniformHemisphere, uniformHemispherePdf()),
-                                        [](const Vec3d& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; },
-                                        options(63, 127));
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      drawWith(sampleUniformHemisphere, uniformHemispherePdf()),
+      [](const Vec3d& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; }, options(63, 127));
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(WarpChiSquare, CosineHemisphere) {
@@ -46,8 +48,10 @@ TEST(WarpChiSquare, CosineHemisphere) {
     if (w.z <= 0) return std::nullopt;
     return DirectionSample{w, cosineHemispherePdf(w.z)};
   };
-  const auto r = sphericalChiSquareTest(draw, [](const Vec3d& w) { return cosineHemispherePdf(w.z); }, options());
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      draw, [](const Vec3d& w) { return cosineHemispherePdf(w.z); }, options());
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(WarpChiSquare, UniformCone) {
@@ -56,9 +60,10 @@ TEST(WarpChiSquare, UniformCone) {
   auto draw = [=](CounterRng& rng) -> std::optional<DirectionSample> {
     return DirectionSample{sampleUniformCone(rng.uniform2D(), cosMax), uniformConePdf(cosMax)};
   };
-  const auto r = sphericalChiSquareTest(draw, [=](const Vec3d& w) { return w.z >= cosMax ? uniformConePdf(cosMax) : 0.0; },
-                                        options(37, 71));
-  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " " << r.failure;
+  const auto r = sphericalChiSquareTest(
+      draw, [=](const Vec3d& w) { return w.z >= cosMax ? uniformConePdf(cosMax) : 0.0; }, options(37, 71));
+  EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
+                        << r.failure;
 }
 
 TEST(WarpChiSquare, RejectsCosineSamplesAgainstUniformPdf) {
@@ -66,15 +71,16 @@ TEST(WarpChiSquare, RejectsCosineSamplesAgainstUniformPdf) {
     const Vec3d w = sampleCosineHemisphere(rng.uniform2D());
     return DirectionSample{w, uniformHemispherePdf()};
   };
-  const auto r = sphericalChiSquareTest(draw, [](const Vec3d& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; },
-                                        options());
+  const auto r = sphericalChiSquareTest(
+      draw, [](const Vec3d& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; }, options());
   EXPECT_FALSE(r.passed);
 }
 
 TEST(WarpChiSquare, RejectsSamplesOutsideThePdfSupport) {
   // Uniform-sphere samples against a hemisphere pdf: half the samples where pdf = 0.
-  const auto r = sphericalChiSquareTest(drawWith(sampleUniformSphere, uniformHemispherePdf()),
-                                        [](const Vec3d& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; }, options());
+  const auto r = sphericalChiSquareTest(
+      drawWith(sampleUniformSphere, uniformHemispherePdf()),
+      [](const Vec3d& w) { return w.z >= 0 ? uniformHemispherePdf() : 0.0; }, options());
   EXPECT_FALSE(r.passed);
   EXPECT_FALSE(r.failure.empty());
 }

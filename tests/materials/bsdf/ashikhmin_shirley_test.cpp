@@ -13,10 +13,11 @@ namespace scatterlab {
 namespace {
 
 const std::vector<std::pair<Vec3d, Vec3d>>& pairs() {
-  static const std::vector<std::pair<Vec3d, Vec3d>> p{{directionFromDegrees(0, 0), directionFromDegrees(8, 180)},
-                                                      {directionFromDegrees(30, 20), directionFromDegrees(40, 190)},
-                                                      {directionFromDegrees(60, 0), directionFromDegrees(50, 120)},
-                                                      {directionFromDegrees(80, 45), directionFromDegrees(75, 230)}};
+  static const std::vector<std::pair<Vec3d, Vec3d>> p{
+      {directionFromDegrees(0, 0), directionFromDegrees(8, 180)},
+      {directionFromDegrees(30, 20), directionFromDegrees(40, 190)},
+      {directionFromDegrees(60, 0), directionFromDegrees(50, 120)},
+      {directionFromDegrees(80, 45), directionFromDegrees(75, 230)}};
   return p;
 }
 
@@ -29,11 +30,12 @@ TEST(AshikhminShirley, PaperModelMatchesEquations4And5) {
     const Vec3d h = glm::normalize(k1 + k2);
     const double phiH = std::atan2(h.y, h.x);
     const double hk = glm::dot(h, k1);
-    const double specular = std::sqrt((nu + 1) * (nv + 1)) / (8 * Pi) *
-                            std::pow(h.z, nu * std::pow(std::cos(phiH), 2) + nv * std::pow(std::sin(phiH), 2)) /
-                            (hk * std::max(k1.z, k2.z)) * schlick(rs, hk);
-    const double diffuse = 28 * rd / (23 * Pi) * (1 - rs) * (1 - std::pow(1 - k1.z / 2, 5)) *
-                           (1 - std::pow(1 - k2.z / 2, 5));
+    const double specular =
+        std::sqrt((nu + 1) * (nv + 1)) / (8 * Pi) *
+        std::pow(h.z, nu * std::pow(std::cos(phiH), 2) + nv * std::pow(std::sin(phiH), 2)) /
+        (hk * std::max(k1.z, k2.z)) * schlick(rs, hk);
+    const double diffuse =
+        28 * rd / (23 * Pi) * (1 - rs) * (1 - std::pow(1 - k1.z / 2, 5)) * (1 - std::pow(1 - k2.z / 2, 5));
     const double expected = specular + diffuse;
     EXPECT_NEAR(model.eval(k1, k2).y, expected, 1e-10 * expected);
     EXPECT_NEAR(model.eval(k2, k1).y, expected, 1e-10 * expected);  // reciprocal
@@ -43,8 +45,10 @@ TEST(AshikhminShirley, PaperModelMatchesEquations4And5) {
 TEST(AshikhminShirley, NganVariantMatchesItsDefinition) {
   // alum-bronze, Ngan et al.'s fit: specular lobe only, scaled by the albedo.
   const double n = 1350, f0 = 0.249;
-  const auto model = makeBsdf({{"type", "ngan-ashikhmin-shirley"}, {"albedo", {0.108, 0.0637, 0.0337}},
-                               {"fresnelReflectance", f0}, {"sharpness", n}});
+  const auto model = makeBsdf({{"type", "ngan-ashikhmin-shirley"},
+                               {"albedo", {0.108, 0.0637, 0.0337}},
+                               {"fresnelReflectance", f0},
+                               {"sharpness", n}});
   for (const auto& [wi, wo0] : pairs()) {
     // Near the mirror direction, where the sharp lobe is not negligible.
     const Vec3d wo = glm::normalize(Vec3d(-wi.x, -wi.y, wi.z) + 0.02 * (wo0 - wi));
@@ -85,13 +89,13 @@ struct AsCase {
   double nu, nv, rs, rd;
 };
 std::string name(const AsCase& c) {
-  return std::string(c.ngan ? "Ngan" : "Paper") + "_" + catalog_suite::number(c.nu) + "x" + catalog_suite::number(c.nv) +
-         "_rs" + catalog_suite::number(c.rs);
+  return std::string(c.ngan ? "Ngan" : "Paper") + "_" + catalog_suite::number(c.nu) + "x" +
+         catalog_suite::number(c.nv) + "_rs" + catalog_suite::number(c.rs);
 }
 // Exponents from 0 (uniform half vectors) to 1e5; 800 x 1 is the anisotropy of alpha
 // 0.05 x 0.8 (n ~ 2 / alpha^2 - 2).
 std::vector<AsCase> grid() {
-  return {{false, 0, 0, 1.0, 1.0},       {false, 10, 10, 0.05, 1.0}, {false, 1000, 1000, 1.0, 0.0},
+  return {{false, 0, 0, 1.0, 1.0},           {false, 10, 10, 0.05, 1.0}, {false, 1000, 1000, 1.0, 0.0},
           {false, 100000, 100000, 0.5, 0.5}, {false, 800, 1, 0.2, 0.8},  {true, 1, 1, 1.0, 0.0},
           {true, 78200, 78200, 0.999, 0.0}};
 }
@@ -110,7 +114,6 @@ TEST_P(AshikhminShirleyKit, PassesEveryCheck) {
 INSTANTIATE_TEST_SUITE_P(Grid, AshikhminShirleyKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<AsCase>& info) { return name(info.param); });
 
-
 // The kit must reject deliberately broken samplers of this model (VALIDATION.md section 1).
 struct ControlCase {
   const char* name;
@@ -121,10 +124,16 @@ class AshikhminShirleyNegativeControls : public ::testing::TestWithParam<Control
 TEST_P(AshikhminShirleyNegativeControls, AreAllRejected) {
   catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
 }
-INSTANTIATE_TEST_SUITE_P(Controls, AshikhminShirleyNegativeControls,
-                         ::testing::Values(ControlCase{"Anisotropic_wi0", {{"type", "ashikhmin-shirley"}, {"exponent", {200, 20}}, {"rs", 0.5}, {"rd", 0.3}}, 0.0},
-                                           ControlCase{"Ngan_wi60", {{"type", "ngan-ashikhmin-shirley"}, {"fresnelReflectance", 0.5}, {"sharpness", 300}}, 60.0}),
-                         [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Controls, AshikhminShirleyNegativeControls,
+    ::testing::Values(
+        ControlCase{"Anisotropic_wi0",
+                    {{"type", "ashikhmin-shirley"}, {"exponent", {200, 20}}, {"rs", 0.5}, {"rd", 0.3}},
+                    0.0},
+        ControlCase{"Ngan_wi60",
+                    {{"type", "ngan-ashikhmin-shirley"}, {"fresnelReflectance", 0.5}, {"sharpness", 300}},
+                    60.0}),
+    [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace scatterlab

@@ -21,7 +21,8 @@ struct BlendCase {
 };
 
 json blendOf(json weight, json first, json second) {
-  return {{"type", "blend"}, {"weight", std::move(weight)}, {"materials", {std::move(first), std::move(second)}}};
+  return {
+      {"type", "blend"}, {"weight", std::move(weight)}, {"materials", {std::move(first), std::move(second)}}};
 }
 
 std::vector<BlendCase> grid() {
@@ -32,8 +33,8 @@ std::vector<BlendCase> grid() {
        blendOf({0.2, 0.5, 0.8}, {{"type", "conductor"}, {"alpha", 0.02}, {"metal", "Ag"}},
                {{"type", "conductor"}, {"alpha", {0.8, 0.3}}, {"metal", "Cu"}})},
       // Delta reflection and refraction into eta 1.5, seen from both sides.
-      {"LambertianGlass", blendOf(0.5, {{"type", "lambertian"}, {"albedo", 1.0}}, {{"type", "dielectric"}, {"eta", 1.5}}),
-       true},
+      {"LambertianGlass",
+       blendOf(0.5, {{"type", "lambertian"}, {"albedo", 1.0}}, {{"type", "dielectric"}, {"eta", 1.5}}), true},
   };
 }
 
@@ -59,14 +60,17 @@ TEST_P(BlendKit, PassesEveryCheck) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, BlendKit, ::testing::ValuesIn(grid()),
-                         [](const ::testing::TestParamInfo<BlendCase>& info) { return std::string(info.param.name); });
+                         [](const ::testing::TestParamInfo<BlendCase>& info) {
+                           return std::string(info.param.name);
+                         });
 
 // Outside the grid, so that the sanitizer pass runs a blend through the kit too: two lossless
 // models (a white rough plastic and a white Lambertian), so the blend is lossless and the
 // white furnace check runs; at 30 degrees, which the grid leaves out.
 TEST(BlendKitSmoke, LosslessPairPassesTheFurnace) {
-  const auto model = makeBsdf(blendOf({0.3, 0.6, 0.9}, {{"type", "rough-plastic"}, {"alpha", 0.05}, {"diffuse", 1.0}},
-                                      {{"type", "lambertian"}, {"albedo", 1.0}}));
+  const auto model =
+      makeBsdf(blendOf({0.3, 0.6, 0.9}, {{"type", "rough-plastic"}, {"alpha", 0.05}, {"diffuse", 1.0}},
+                       {{"type", "lambertian"}, {"albedo", 1.0}}));
   ASSERT_TRUE(model->isLossless());
   BsdfCheckOptions o = catalog_suite::options("blend-kit");
   o.wiThetaDeg = {30};
@@ -87,12 +91,13 @@ TEST_P(BlendNegativeControls, AreAllRejected) {
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, BlendNegativeControls,
-    ::testing::Values(ControlCase{"LambertianGold_wi0",
-                                  blendOf(0.3, {{"type", "lambertian"}}, {{"type", "conductor"}, {"alpha", 0.3}}), 0.0},
-                      ControlCase{"TwoConductors_wi80",
-                                  blendOf(0.5, {{"type", "conductor"}, {"alpha", 0.05}},
-                                          {{"type", "conductor"}, {"alpha", 0.5}, {"distribution", "beckmann"}}),
-                                  80.0}),
+    ::testing::Values(
+        ControlCase{"LambertianGold_wi0",
+                    blendOf(0.3, {{"type", "lambertian"}}, {{"type", "conductor"}, {"alpha", 0.3}}), 0.0},
+        ControlCase{"TwoConductors_wi80",
+                    blendOf(0.5, {{"type", "conductor"}, {"alpha", 0.05}},
+                            {{"type", "conductor"}, {"alpha", 0.5}, {"distribution", "beckmann"}}),
+                    80.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -71,7 +71,8 @@ class LobeRecorder final : public BsdfModel {
   mutable double lastULobe = -1;
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.eval(wi, wo); }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.pdf(wi, wo); }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     lastULobe = uLobe;
     return base_.sample(wi, uLobe, u);
   }
@@ -125,7 +126,8 @@ TEST(Blend, SamplesReportTheMixture) {
 TEST(Blend, DeltaSamplesHaveTheMixturesDiscreteProbability) {
   const double eta = 1.5;
   const Rgb w(0.2, 0.4, 0.6);  // wbar = 0.4
-  const BlendBsdf blend(std::make_unique<SmoothDielectricBsdf>(eta), std::make_unique<LambertianBsdf>(Rgb(0.5)), w);
+  const BlendBsdf blend(std::make_unique<SmoothDielectricBsdf>(eta),
+                        std::make_unique<LambertianBsdf>(Rgb(0.5)), w);
   const SmoothDielectricBsdf dielectric(eta);
   const Vec3d wi = directionFromDegrees(45, 0);
   for (double uInside : {0.01, 0.5, 0.99}) {
@@ -150,8 +152,8 @@ TEST(Blend, DeltaSamplesHaveTheMixturesDiscreteProbability) {
 TEST(Blend, SmoothConductorDeltaWeightIsScaledByTheChannelWeight) {
   const MetalIor* au = findMetal("Au");
   const Rgb w(1.0, 0.5, 0.0);  // wbar = 0.5
-  const BlendBsdf blend(std::make_unique<SmoothConductorBsdf>(au->eta, au->k), std::make_unique<LambertianBsdf>(Rgb(0.9)),
-                        w);
+  const BlendBsdf blend(std::make_unique<SmoothConductorBsdf>(au->eta, au->k),
+                        std::make_unique<LambertianBsdf>(Rgb(0.9)), w);
   const Vec3d wi = directionFromDegrees(20, 60);
   const auto s = blend.sample(wi, 0.2, {0.5, 0.5});
   const auto d = SmoothConductorBsdf(au->eta, au->k).sample(wi, 0.4, {0.5, 0.5});
@@ -163,8 +165,8 @@ TEST(Blend, SmoothConductorDeltaWeightIsScaledByTheChannelWeight) {
 }
 
 TEST(Blend, FlagsLosslessReciprocalAndInteriorIndex) {
-  const BlendBsdf glass(std::make_unique<LambertianBsdf>(Rgb(1.0)), std::make_unique<SmoothDielectricBsdf>(1.33),
-                        Rgb(0.5));
+  const BlendBsdf glass(std::make_unique<LambertianBsdf>(Rgb(1.0)),
+                        std::make_unique<SmoothDielectricBsdf>(1.33), Rgb(0.5));
   EXPECT_TRUE(glass.isReciprocal());
   EXPECT_EQ(glass.interiorIndex(), 1.33);
   EXPECT_EQ(glass.flags(), LobeFlags::DiffuseReflection | SmoothDielectricBsdf(1.33).flags());
@@ -189,11 +191,15 @@ TEST(Blend, RejectsTwoDeltaModelsDifferentMediaAndBadWeights) {
   EXPECT_THROW(BlendBsdf(std::make_unique<SmoothDielectricBsdf>(1.5),
                          std::make_unique<SmoothConductorBsdf>(au->eta, au->k), Rgb(0.5)),
                std::invalid_argument);
-  EXPECT_THROW(makeBsdf({{"type", "blend"},
-                         {"materials", {{{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.33}}}}}),
-               MaterialError);
-  EXPECT_NO_THROW(makeBsdf({{"type", "blend"},
-                            {"materials", {{{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.5}}}}}));
+  EXPECT_THROW(
+      makeBsdf({{"type", "blend"},
+                {"materials",
+                 {{{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.33}}}}}),
+      MaterialError);
+  EXPECT_NO_THROW(
+      makeBsdf({{"type", "blend"},
+                {"materials",
+                 {{{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.5}}}}}));
   EXPECT_THROW(BlendBsdf(std::make_unique<LambertianBsdf>(Rgb(0.5)), gold(0.1), Rgb(0.5, 1.2, 0.5)),
                std::invalid_argument);
   EXPECT_THROW(BlendBsdf(nullptr, gold(0.1), Rgb(0.5)), std::invalid_argument);
@@ -224,7 +230,7 @@ TEST(BlendRegistry, DefaultsBuildAndCompleteTheNestedMaterials) {
   EXPECT_EQ(completed["materials"][0], (json{{"type", "lambertian"}, {"albedo", 0.8}}));
   EXPECT_EQ(completed["materials"][1], completeMaterial(conductor));
   EXPECT_EQ(completed["materials"][1]["distribution"], "ggx");  // a default filled in
-  EXPECT_EQ(completed["materials"][1]["alpha"], 0.2);            // the value given kept
+  EXPECT_EQ(completed["materials"][1]["alpha"], 0.2);           // the value given kept
   // What is printed is what is built: the completed material builds the same model.
   const Vec3d wi = directionFromDegrees(30, 0), wo = directionFromDegrees(40, 170);
   EXPECT_EQ(makeBsdf(completed)->eval(wi, wo), makeBsdf(given)->eval(wi, wo));
@@ -232,11 +238,15 @@ TEST(BlendRegistry, DefaultsBuildAndCompleteTheNestedMaterials) {
 }
 
 TEST(BlendRegistry, NestedBlendsBuild) {
-  const json inner{{"type", "blend"}, {"weight", 0.5}, {"materials", {{{"type", "lambertian"}}, {{"type", "oren-nayar"}}}}};
+  const json inner{{"type", "blend"},
+                   {"weight", 0.5},
+                   {"materials", {{{"type", "lambertian"}}, {{"type", "oren-nayar"}}}}};
   const auto model = makeBsdf({{"type", "blend"}, {"materials", {inner, {{"type", "rough-plastic"}}}}});
   EXPECT_GT(model->pdf(directionFromDegrees(20, 0), directionFromDegrees(30, 100)), 0.0);
-  EXPECT_EQ(completeMaterial({{"type", "blend"}, {"materials", {inner, {{"type", "lambertian"}}}}})["materials"][0]["materials"][1],
-            (json{{"type", "oren-nayar"}, {"albedo", 0.8}, {"sigma", 0.35}}));
+  EXPECT_EQ(
+      completeMaterial({{"type", "blend"},
+                        {"materials", {inner, {{"type", "lambertian"}}}}})["materials"][0]["materials"][1],
+      (json{{"type", "oren-nayar"}, {"albedo", 0.8}, {"sigma", 0.35}}));
 }
 
 struct NestedError {
@@ -255,14 +265,17 @@ TEST_P(BlendRegistryErrors, NameTheNestedKeyPath) {
   const std::string message = materialErrorOf(GetParam().material);
   ASSERT_FALSE(message.empty()) << GetParam().material.dump();
   for (const std::string& fragment : GetParam().messageContains)
-    EXPECT_NE(message.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << message;
+    EXPECT_NE(message.find(fragment), std::string::npos)
+        << "\"" << fragment << "\" missing from: " << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   if (!GetParam().atBuild) {
     EXPECT_THROW(completeMaterial(GetParam().material), MaterialError);
   }
 }
 
-json blendOf(json first, json second) { return {{"type", "blend"}, {"materials", {std::move(first), std::move(second)}}}; }
+json blendOf(json first, json second) {
+  return {{"type", "blend"}, {"materials", {std::move(first), std::move(second)}}};
+}
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BlendRegistryErrors,
@@ -273,19 +286,25 @@ INSTANTIATE_TEST_SUITE_P(
         NestedError{"unknown nested key",
                     blendOf({{"type", "lambertian"}, {"roughness", 1}}, {{"type", "lambertian"}}),
                     {"material key \"materials[0].roughness\"", "\"lambertian\"", "\"albedo\""}},
-        NestedError{"nested type missing", blendOf({{"albedo", 0.5}}, {{"type", "lambertian"}}),
+        NestedError{"nested type missing",
+                    blendOf({{"albedo", 0.5}}, {{"type", "lambertian"}}),
                     {"material key \"materials[0].type\" is missing", "\"lambertian\""}},
-        NestedError{"nested type unknown", blendOf({{"type", "lambertian"}}, {{"type", "plastic"}}),
+        NestedError{"nested type unknown",
+                    blendOf({{"type", "lambertian"}}, {{"type", "plastic"}}),
                     {"material key \"materials[1].type\": \"plastic\" is not a known model"}},
-        NestedError{"nested not an object", blendOf(42, {{"type", "lambertian"}}),
+        NestedError{"nested not an object",
+                    blendOf(42, {{"type", "lambertian"}}),
                     {"material key \"materials[0]\": 42 is not a JSON object"}},
-        NestedError{"one material", {{"type", "blend"}, {"materials", {{{"type", "lambertian"}}}}},
+        NestedError{"one material",
+                    {{"type", "blend"}, {"materials", {{{"type", "lambertian"}}}}},
                     {"material key \"materials\"", "wrong number of materials", "exactly 2 materials"}},
-        NestedError{"three materials",
-                    {{"type", "blend"},
-                     {"materials", {{{"type", "lambertian"}}, {{"type", "lambertian"}}, {{"type", "lambertian"}}}}},
-                    {"material key \"materials\"", "wrong number of materials"}},
-        NestedError{"materials not an array", {{"type", "blend"}, {"materials", {{"type", "lambertian"}}}},
+        NestedError{
+            "three materials",
+            {{"type", "blend"},
+             {"materials", {{{"type", "lambertian"}}, {{"type", "lambertian"}}, {{"type", "lambertian"}}}}},
+            {"material key \"materials\"", "wrong number of materials"}},
+        NestedError{"materials not an array",
+                    {{"type", "blend"}, {"materials", {{"type", "lambertian"}}}},
                     {"material key \"materials\"", "wrong type", "exactly 2 materials"}},
         NestedError{"deeper nesting",
                     blendOf(blendOf({{"type", "lambertian"}}, {{"type", "lambertian"}, {"albedo", -1}}),
@@ -298,10 +317,11 @@ INSTANTIATE_TEST_SUITE_P(
                     blendOf({{"type", "dielectric"}}, {{"type", "smooth-conductor"}}),
                     {"material key \"materials\"", "cannot be blended", "delta"},
                     true},
-        NestedError{"different interior indices",
-                    blendOf({{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.33}}),
-                    {"material key \"materials\"", "cannot be blended", "interior indices"},
-                    true}),
+        NestedError{
+            "different interior indices",
+            blendOf({{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.33}}),
+            {"material key \"materials\"", "cannot be blended", "interior indices"},
+            true}),
     [](const testing::TestParamInfo<NestedError>& info) {
       std::string name = info.param.what;
       for (char& c : name)

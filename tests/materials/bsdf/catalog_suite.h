@@ -101,8 +101,10 @@ inline void expectControlsRejected(const nlohmann::json& material, double wiThet
     EXPECT_TRUE(row.passed) << row.test << ": " << row.note;
     const bool mustReject = control == NegativeControl::PdfHighOnHalf;
     const bool rejected = row.note.rfind("rejected", 0) == 0;
-    if (mustReject) EXPECT_TRUE(rejected) << row.test << ": " << row.note;
-    else EXPECT_TRUE(rejected || row.note.rfind("not applicable", 0) == 0) << row.test << ": " << row.note;
+    if (mustReject)
+      EXPECT_TRUE(rejected) << row.test << ": " << row.note;
+    else
+      EXPECT_TRUE(rejected || row.note.rfind("not applicable", 0) == 0) << row.test << ": " << row.note;
   }
 }
 

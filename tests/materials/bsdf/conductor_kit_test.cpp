@@ -4,9 +4,9 @@
 // negative controls, which the kit must reject for this model too.
 #include <gtest/gtest.h>
 
+#include "catalog_suite.h"
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/metals.h"
-#include "catalog_suite.h"
 
 namespace scatterlab {
 namespace {
@@ -49,7 +49,8 @@ BsdfCheckOptions suiteOptions() {
 
 std::unique_ptr<BsdfModel> makeGold(const ConductorCase& c, double alphaScale = 1.0) {
   const MetalIor* gold = findMetal("Au");
-  return makeMicrofacetConductor(c.type, c.alphaX * alphaScale, c.alphaY * alphaScale, gold->eta, gold->k, c.sampling);
+  return makeMicrofacetConductor(c.type, c.alphaX * alphaScale, c.alphaY * alphaScale, gold->eta, gold->k,
+                                 c.sampling);
 }
 
 class ConductorKit : public ::testing::TestWithParam<ConductorCase> {};
@@ -62,7 +63,9 @@ TEST_P(ConductorKit, PassesEveryCheck) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, ConductorKit, ::testing::ValuesIn(grid()),
-                         [](const ::testing::TestParamInfo<ConductorCase>& info) { return name(info.param); });
+                         [](const ::testing::TestParamInfo<ConductorCase>& info) {
+                           return name(info.param);
+                         });
 
 // Odd grid resolutions, so that no lobe peak always sits on a cell edge.
 TEST(ConductorKitOddGrid, GgxAndBeckmannPassOn37x83) {
@@ -70,8 +73,9 @@ TEST(ConductorKitOddGrid, GgxAndBeckmannPassOn37x83) {
   o.thetaBins = 37;
   o.phiBins = 83;
   o.wiThetaDeg = OddGridAngles;
-  for (const ConductorCase c : {ConductorCase{MicrofacetType::Ggx, MicrofacetSampling::Visible, 0.02, 0.2},
-                                ConductorCase{MicrofacetType::Beckmann, MicrofacetSampling::Visible, 0.2, 0.02}}) {
+  for (const ConductorCase c :
+       {ConductorCase{MicrofacetType::Ggx, MicrofacetSampling::Visible, 0.02, 0.2},
+        ConductorCase{MicrofacetType::Beckmann, MicrofacetSampling::Visible, 0.2, 0.02}}) {
     const CheckReport report = runBsdfChecks(*makeGold(c), name(c), o);
     EXPECT_TRUE(report.passed()) << formatTable(report);
   }
@@ -97,8 +101,10 @@ TEST_P(ConductorNegativeControls, AreAllRejected) {
     // A control counts only if it was rejected by the test. The one exception: the classic
     // D cos pdf, D(h) h.z / (4 |wo.h|), is symmetric in wi and wo, so swapping them is no
     // error there and the kit must say so instead of claiming a rejection.
-    const bool symmetricSwap = c.conductor.sampling == MicrofacetSampling::Classic && row.test.find("swapped") != std::string::npos;
-    EXPECT_EQ(row.note.rfind(symmetricSwap ? "not applicable" : "rejected", 0), 0u) << row.test << ": " << row.note;
+    const bool symmetricSwap =
+        c.conductor.sampling == MicrofacetSampling::Classic && row.test.find("swapped") != std::string::npos;
+    EXPECT_EQ(row.note.rfind(symmetricSwap ? "not applicable" : "rejected", 0), 0u)
+        << row.test << ": " << row.note;
   }
 }
 

@@ -7,9 +7,9 @@
 // the negative controls, which the kit must reject.
 #include <gtest/gtest.h>
 
+#include "catalog_suite.h"
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/metals.h"
-#include "catalog_suite.h"
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
@@ -19,21 +19,22 @@ struct Case {
   MicrofacetType type;
   MicrofacetSampling sampling;
   double alphaX, alphaY;
-  bool white;  // a perfect conductor (F = 1): lossless, so the kit adds its furnace row
+  bool white;                    // a perfect conductor (F = 1): lossless, so the kit adds its furnace row
   std::vector<double> angles{};  // incident polar angles, degrees
 };
 
 std::string name(const Case& c) {
   return std::string(c.type == MicrofacetType::Ggx ? "Ggx" : "Beckmann") +
-         (c.sampling == MicrofacetSampling::Visible ? "Visible" : "Classic") + "_" + catalog_suite::number(c.alphaX) +
-         "x" + catalog_suite::number(c.alphaY) + (c.white ? "_white" : "_gold");
+         (c.sampling == MicrofacetSampling::Visible ? "Visible" : "Classic") + "_" +
+         catalog_suite::number(c.alphaX) + "x" + catalog_suite::number(c.alphaY) +
+         (c.white ? "_white" : "_gold");
 }
 
 std::unique_ptr<BsdfModel> make(const Case& c, double alphaScale = 1.0) {
   const MetalIor* gold = findMetal("Au");
-  return makeMicrofacetConductor(c.type, std::min(1.0, c.alphaX * alphaScale), std::min(1.0, c.alphaY * alphaScale),
-                                 c.white ? Rgb(1.0) : gold->eta, c.white ? Rgb(1e8) : gold->k, c.sampling,
-                                 MultipleScattering::KullaConty);
+  return makeMicrofacetConductor(c.type, std::min(1.0, c.alphaX * alphaScale),
+                                 std::min(1.0, c.alphaY * alphaScale), c.white ? Rgb(1.0) : gold->eta,
+                                 c.white ? Rgb(1e8) : gold->k, c.sampling, MultipleScattering::KullaConty);
 }
 
 // The compensated model costs about twice the single-scattering one in the kit (two table
@@ -99,12 +100,13 @@ TEST_P(ConductorMultiscatterNegativeControls, AreAllRejected) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Controls, ConductorMultiscatterNegativeControls,
-    ::testing::Values(ControlCase{{MicrofacetType::Ggx, MicrofacetSampling::Visible, 0.6, 0.2, false}, 60.0}),
-    [](const ::testing::TestParamInfo<ControlCase>& info) {
-      return name(info.param.conductor) + "_wi" + std::to_string(int(info.param.wiTheta));
-    });
+INSTANTIATE_TEST_SUITE_P(Controls, ConductorMultiscatterNegativeControls,
+                         ::testing::Values(ControlCase{
+                             {MicrofacetType::Ggx, MicrofacetSampling::Visible, 0.6, 0.2, false}, 60.0}),
+                         [](const ::testing::TestParamInfo<ControlCase>& info) {
+                           return name(info.param.conductor) + "_wi" +
+                                  std::to_string(int(info.param.wiTheta));
+                         });
 
 }  // namespace
 }  // namespace scatterlab

@@ -6,9 +6,9 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
+#include "materials/core/quadrature.h"
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
-#include "materials/core/quadrature.h"
 
 namespace scatterlab {
 namespace {
@@ -23,8 +23,9 @@ struct Configuration {
 };
 
 std::string describe(const Configuration& c) {
-  return std::string(c.type == MicrofacetType::Ggx ? "ggx" : "beckmann") + " alpha (" + std::to_string(c.alphaX) +
-         ", " + std::to_string(c.alphaY) + ") " + (c.sampling == MicrofacetSampling::Visible ? "visible" : "classic");
+  return std::string(c.type == MicrofacetType::Ggx ? "ggx" : "beckmann") + " alpha (" +
+         std::to_string(c.alphaX) + ", " + std::to_string(c.alphaY) + ") " +
+         (c.sampling == MicrofacetSampling::Visible ? "visible" : "classic");
 }
 
 std::vector<Configuration> configurations() {
@@ -55,7 +56,8 @@ TEST(MicrofacetConductor, EvalIsReciprocal) {
     const auto model = make(c);
     CounterRng rng(7, 0);
     for (int i = 0; i < 2000; ++i) {
-      const Vec3d wi = sampleUniformHemisphere(rng.uniform2D()), wo = sampleUniformHemisphere(rng.uniform2D());
+      const Vec3d wi = sampleUniformHemisphere(rng.uniform2D()),
+                  wo = sampleUniformHemisphere(rng.uniform2D());
       ASSERT_LE(maxRelativeDifference(model->eval(wi, wo), model->eval(wo, wi)), 1e-12) << describe(c);
     }
   }
@@ -156,7 +158,9 @@ TEST(MicrofacetConductor, ClassicAndVisibleSamplingAreBothNormalised) {
     options.minDepth = 4;
     const auto overHemisphere = [&](const auto& f) {
       return adaptiveSimpson2D(
-          [&](double cosTheta, double phi) { return f(sphericalDirection(safeSqrt(1.0 - cosTheta * cosTheta), cosTheta, phi)); },
+          [&](double cosTheta, double phi) {
+            return f(sphericalDirection(safeSqrt(1.0 - cosTheta * cosTheta), cosTheta, phi));
+          },
           0.0, 1.0, -Pi, Pi, options);
     };
     const Rgb albedo = overHemisphere([&](const Vec3d& wo) { return visible->eval(wi, wo) * wo.z; });
@@ -184,15 +188,18 @@ TEST(MicrofacetConductor, ClassicAndVisibleSamplingAreBothNormalised) {
       // 1% is more than 5 of them.
       const Rgb estimate = weightSum / double(n);
       for (int channel = 0; channel < 3; ++channel)
-        EXPECT_NEAR(estimate[channel] / albedo[channel], 1.0, 0.01) << (model == visible.get() ? "visible" : "classic");
+        EXPECT_NEAR(estimate[channel] / albedo[channel], 1.0, 0.01)
+            << (model == visible.get() ? "visible" : "classic");
     }
   }
 }
 
 TEST(MicrofacetConductor, FactoryRejectsNonPositiveRoughness) {
   EXPECT_THROW(makeMicrofacetConductor(MicrofacetType::Ggx, 0.0, 0.1, GoldEta, GoldK), std::invalid_argument);
-  EXPECT_THROW(makeMicrofacetConductor(MicrofacetType::Beckmann, 0.1, -1.0, GoldEta, GoldK), std::invalid_argument);
-  EXPECT_THROW(makeMicrofacetConductor(MicrofacetType::Ggx, std::nan(""), 0.1, GoldEta, GoldK), std::invalid_argument);
+  EXPECT_THROW(makeMicrofacetConductor(MicrofacetType::Beckmann, 0.1, -1.0, GoldEta, GoldK),
+               std::invalid_argument);
+  EXPECT_THROW(makeMicrofacetConductor(MicrofacetType::Ggx, std::nan(""), 0.1, GoldEta, GoldK),
+               std::invalid_argument);
   const auto model = makeMicrofacetConductor(MicrofacetType::Ggx, 0.1, 0.2, GoldEta, GoldK);
   EXPECT_EQ(model->flags(), LobeFlags::GlossyReflection);
   EXPECT_FALSE(model->isLossless());
@@ -211,7 +218,8 @@ TEST(MicrofacetConductor, KernelWithJetsMatchesDoubleAndHasFiniteDerivatives) {
     const RgbT<Jet> eta(Jet(GoldEta.x, 1), Jet(GoldEta.y, 1), Jet(GoldEta.z, 1));
     const RgbT<Jet> k(Jet(GoldK.x), Jet(GoldK.y), Jet(GoldK.z));
     const auto ggxModel = makeMicrofacetConductor(MicrofacetType::Ggx, alpha, alpha, GoldEta, GoldK);
-    const auto beckmannModel = makeMicrofacetConductor(MicrofacetType::Beckmann, alpha, alpha, GoldEta, GoldK);
+    const auto beckmannModel =
+        makeMicrofacetConductor(MicrofacetType::Beckmann, alpha, alpha, GoldEta, GoldK);
     for (const Vec3d& wi : incidentDirections()) {
       const Vec3d wos[] = {Vec3d(-wi.x, -wi.y, wi.z), directionFromDegrees(45, 200)};
       for (const Vec3d& wo : wos) {

@@ -14,16 +14,18 @@ namespace {
 
 TEST(NganCookTorrance, MatchesNgansDefinition) {
   const double m = 0.0367, f0 = 0.203;  // alum-bronze, Ngan et al.'s fit
-  const auto model = makeBsdf({{"type", "ngan-cook-torrance"}, {"albedo", {0.118, 0.0698, 0.0371}}, {"eta", f0},
-                               {"roughness", m}});
-  const std::vector<std::pair<Vec3d, Vec3d>> pairs{{directionFromDegrees(0, 0), directionFromDegrees(3, 180)},
-                                                   {directionFromDegrees(30, 20), directionFromDegrees(32, 195)},
-                                                   {directionFromDegrees(70, 0), directionFromDegrees(72, 178)},
-                                                   {directionFromDegrees(85, 45), directionFromDegrees(87, 222)}};
+  const auto model = makeBsdf(
+      {{"type", "ngan-cook-torrance"}, {"albedo", {0.118, 0.0698, 0.0371}}, {"eta", f0}, {"roughness", m}});
+  const std::vector<std::pair<Vec3d, Vec3d>> pairs{
+      {directionFromDegrees(0, 0), directionFromDegrees(3, 180)},
+      {directionFromDegrees(30, 20), directionFromDegrees(32, 195)},
+      {directionFromDegrees(70, 0), directionFromDegrees(72, 178)},
+      {directionFromDegrees(85, 45), directionFromDegrees(87, 222)}};
   for (const auto& [wi, wo] : pairs) {
     const Vec3d h = glm::normalize(wi + wo);
     const double alpha = std::acos(h.z);  // angle between h and n
-    const double d = std::exp(-std::pow(std::tan(alpha) / m, 2)) / (Pi * m * m * std::pow(std::cos(alpha), 4));
+    const double d =
+        std::exp(-std::pow(std::tan(alpha) / m, 2)) / (Pi * m * m * std::pow(std::cos(alpha), 4));
     const double c = glm::dot(wi, h);
     const double g = std::min({1.0, 2 * h.z * wo.z / c, 2 * h.z * wi.z / c});
     const double fresnel = f0 + (1 - f0) * std::pow(1 - c, 5);
@@ -75,8 +77,9 @@ TEST_P(NganCookTorranceKit, PassesEveryCheck) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, NganCookTorranceKit, ::testing::ValuesIn(grid()),
-                         [](const ::testing::TestParamInfo<CookTorranceCase>& info) { return name(info.param); });
-
+                         [](const ::testing::TestParamInfo<CookTorranceCase>& info) {
+                           return name(info.param);
+                         });
 
 // The kit must reject deliberately broken samplers of this model (VALIDATION.md section 1).
 struct ControlCase {
@@ -88,10 +91,16 @@ class NganCookTorranceNegativeControls : public ::testing::TestWithParam<Control
 TEST_P(NganCookTorranceNegativeControls, AreAllRejected) {
   catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
 }
-INSTANTIATE_TEST_SUITE_P(Controls, NganCookTorranceNegativeControls,
-                         ::testing::Values(ControlCase{"Rough_wi45", {{"type", "ngan-cook-torrance"}, {"albedo", 0.7}, {"eta", 0.5}, {"roughness", 0.3}}, 45.0},
-                                           ControlCase{"Sharp_wi80", {{"type", "ngan-cook-torrance"}, {"albedo", 0.7}, {"eta", 0.9}, {"roughness", 0.05}}, 80.0}),
-                         [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Controls, NganCookTorranceNegativeControls,
+    ::testing::Values(
+        ControlCase{"Rough_wi45",
+                    {{"type", "ngan-cook-torrance"}, {"albedo", 0.7}, {"eta", 0.5}, {"roughness", 0.3}},
+                    45.0},
+        ControlCase{"Sharp_wi80",
+                    {{"type", "ngan-cook-torrance"}, {"albedo", 0.7}, {"eta", 0.9}, {"roughness", 0.05}},
+                    80.0}),
+    [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace scatterlab

@@ -247,10 +247,14 @@ struct KitCase {
   const char* type;
   double eta;
 };
-const std::vector<KitCase> KitCases{{"dielectric", 1.1}, {"dielectric", 1.5}, {"dielectric", 2.4},
-                                    {"thin-dielectric", 1.5}, {"thin-dielectric", 2.4}};
+const std::vector<KitCase> KitCases{{"dielectric", 1.1},
+                                    {"dielectric", 1.5},
+                                    {"dielectric", 2.4},
+                                    {"thin-dielectric", 1.5},
+                                    {"thin-dielectric", 2.4}};
 std::string name(const KitCase& c) {
-  return std::string(c.type == std::string("dielectric") ? "Smooth" : "Thin") + "_eta" + catalog_suite::number(c.eta);
+  return std::string(c.type == std::string("dielectric") ? "Smooth" : "Thin") + "_eta" +
+         catalog_suite::number(c.eta);
 }
 
 // The kit cases, plus the two chi-square tests of MissingRadianceScale, whose directions and
@@ -295,7 +299,8 @@ class ClaimedProbabilityOff final : public BsdfModel {
   explicit ClaimedProbabilityOff(double eta) : model_(eta) {}
   Rgb eval(const Vec3d&, const Vec3d&, TransportMode) const override { return Rgb(0.0); }
   double pdf(const Vec3d&, const Vec3d&, TransportMode) const override { return 0.0; }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode mode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode mode) const override {
     auto s = model_.sample(wi, uLobe, u, mode);
     if (!s) return s;
     const double claimedR = 1.05 * model_.reflectance(wi.z);
@@ -316,7 +321,8 @@ class RadianceScaleMissing final : public BsdfModel {
   explicit RadianceScaleMissing(double eta) : model_(eta) {}
   Rgb eval(const Vec3d&, const Vec3d&, TransportMode) const override { return Rgb(0.0); }
   double pdf(const Vec3d&, const Vec3d&, TransportMode) const override { return 0.0; }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u, TransportMode) const override {
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
     return model_.sample(wi, uLobe, u, TransportMode::Importance);
   }
   LobeFlags flags() const override { return model_.flags(); }

@@ -37,7 +37,8 @@ json disney(json parameters) {
 
 const std::vector<DisneyCase>& grid() {
   static const std::vector<DisneyCase> cases{
-      {"Plastic_Roughness0_SpecularTint", {{"baseColor", {0.2, 0.1, 0.05}}, {"roughness", 0}, {"specularTint", 1}}},
+      {"Plastic_Roughness0_SpecularTint",
+       {{"baseColor", {0.2, 0.1, 0.05}}, {"roughness", 0}, {"specularTint", 1}}},
       {"Subsurface_Roughness1", {{"baseColor", 0.6}, {"roughness", 1}, {"subsurface", 1}}},
       {"WhiteMetal_Roughness1_Clearcoat1_Gloss0",
        {{"baseColor", 1}, {"metallic", 1}, {"roughness", 1}, {"clearcoat", 1}, {"clearcoatGloss", 0}}},
@@ -49,7 +50,11 @@ const std::vector<DisneyCase>& grid() {
         {"clearcoat", 1},
         {"clearcoatGloss", 1}}},
       {"Sheen1_Tinted_Anisotropic0p9",
-       {{"baseColor", {0.5, 0.25, 0.1}}, {"roughness", 0.3}, {"anisotropic", 0.9}, {"sheen", 1}, {"sheenTint", 1}}},
+       {{"baseColor", {0.5, 0.25, 0.1}},
+        {"roughness", 0.3},
+        {"anisotropic", 0.9},
+        {"sheen", 1},
+        {"sheenTint", 1}}},
   };
   return cases;
 }
@@ -68,7 +73,9 @@ TEST_P(DisneyKit, PassesEveryCheck) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, DisneyKit, ::testing::ValuesIn(grid()),
-                         [](const ::testing::TestParamInfo<DisneyCase>& info) { return std::string(info.param.name); });
+                         [](const ::testing::TestParamInfo<DisneyCase>& info) {
+                           return std::string(info.param.name);
+                         });
 
 // White base, roughness 1: the albedo row must FAIL and report the excess measured by
 // disney_test.cpp (1.048 at normal incidence, 1.597 at 89.9 deg), while the sampler, the
@@ -89,7 +96,8 @@ TEST(DisneyKitEnergy, WhiteRoughBaseFailsOnlyTheAlbedoRow) {
       continue;
     }
     EXPECT_FALSE(row.passed) << row.note;
-    EXPECT_NEAR(row.statistic, measuredAlbedo.at(albedoRows), 2e-4) << row.wiThetaDeg.value_or(-1) << ": " << row.note;
+    EXPECT_NEAR(row.statistic, measuredAlbedo.at(albedoRows), 2e-4)
+        << row.wiThetaDeg.value_or(-1) << ": " << row.note;
     ++albedoRows;
   }
   EXPECT_EQ(albedoRows, int(WhiteRoughAngles.size()));
@@ -109,14 +117,19 @@ TEST_P(DisneyNegativeControls, AreAllRejected) {
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, DisneyNegativeControls,
-    ::testing::Values(ControlCase{"MetalClearcoat_wi30",
-                                  {{"baseColor", {0.9, 0.6, 0.3}}, {"metallic", 1}, {"roughness", 0.4},
-                                   {"anisotropic", 0.5}, {"clearcoat", 1}, {"clearcoatGloss", 0.5}},
-                                  30.0},
-                      ControlCase{"AllLobes_wi70",
-                                  {{"baseColor", 0.5}, {"metallic", 0.3}, {"roughness", 0.3}, {"sheen", 0.5},
-                                   {"clearcoat", 0.5}},
-                                  70.0}),
+    ::testing::Values(
+        ControlCase{"MetalClearcoat_wi30",
+                    {{"baseColor", {0.9, 0.6, 0.3}},
+                     {"metallic", 1},
+                     {"roughness", 0.4},
+                     {"anisotropic", 0.5},
+                     {"clearcoat", 1},
+                     {"clearcoatGloss", 0.5}},
+                    30.0},
+        ControlCase{
+            "AllLobes_wi70",
+            {{"baseColor", 0.5}, {"metallic", 0.3}, {"roughness", 0.3}, {"sheen", 0.5}, {"clearcoat", 0.5}},
+            70.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
 }  // namespace

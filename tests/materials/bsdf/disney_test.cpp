@@ -25,15 +25,22 @@ Rgb mix(const Rgb& a, const Rgb& b, double t) { return a + (b - a) * t; }
 double schlickWeight(double c) { return std::pow(1.0 - c, 5.0); }
 
 struct Geometry {
-  double cosI, cosO, cosD;   // cos theta_i, cos theta_o, cos theta_d = wi.h
-  double thetaH, phiH;        // of the half vector
+  double cosI, cosO, cosD;  // cos theta_i, cos theta_o, cos theta_d = wi.h
+  double thetaH, phiH;      // of the half vector
   double tanI, phiI, tanO, phiO;
 };
 Geometry geometry(const Vec3d& wi, const Vec3d& wo) {
   const Vec3d h = glm::normalize(wi + wo);
   const auto tanOf = [](const Vec3d& w) { return std::sqrt(w.x * w.x + w.y * w.y) / w.z; };
-  return {wi.z, wo.z, glm::dot(wi, h), std::acos(h.z), std::atan2(h.y, h.x), tanOf(wi), std::atan2(wi.y, wi.x),
-          tanOf(wo), std::atan2(wo.y, wo.x)};
+  return {wi.z,
+          wo.z,
+          glm::dot(wi, h),
+          std::acos(h.z),
+          std::atan2(h.y, h.x),
+          tanOf(wi),
+          std::atan2(wi.y, wi.x),
+          tanOf(wo),
+          std::atan2(wo.y, wo.x)};
 }
 
 // Anisotropic GGX (GTR2, Burley 2012 eq. 13 with gamma = 2), in tan theta_h and phi_h.
@@ -94,8 +101,8 @@ const std::vector<std::pair<Vec3d, Vec3d>>& pairs() {
   static const std::vector<std::pair<Vec3d, Vec3d>> p{
       {directionFromDegrees(5, 10), directionFromDegrees(12, 200)},
       {directionFromDegrees(30, 20), directionFromDegrees(45, 250)},
-      {directionFromDegrees(40, 30), directionFromDegrees(39, 211)},   // 1 deg off the mirror direction
-      {directionFromDegrees(60, 70), directionFromDegrees(58, 75)},    // near retro-reflection
+      {directionFromDegrees(40, 30), directionFromDegrees(39, 211)},  // 1 deg off the mirror direction
+      {directionFromDegrees(60, 70), directionFromDegrees(58, 75)},   // near retro-reflection
       {directionFromDegrees(75, 0), directionFromDegrees(20, 130)},
       {directionFromDegrees(89, 45), directionFromDegrees(88, 230)},
       {directionFromDegrees(89, 100), directionFromDegrees(85, 105)}};
@@ -119,18 +126,18 @@ DisneyParameters parameters(double roughness, double anisotropic) {
 }
 // Rough, anisotropic, smooth-at-the-floor (roughness 0.02: alpha_y clamped to 0.001) and 1.
 const std::vector<DisneyParameters>& parameterSets() {
-  static const std::vector<DisneyParameters> sets{parameters(0.5, 0.7), parameters(0.02, 0.9), parameters(1.0, 0.0),
-                                                  parameters(0.25, 0.0)};
+  static const std::vector<DisneyParameters> sets{parameters(0.5, 0.7), parameters(0.02, 0.9),
+                                                  parameters(1.0, 0.0), parameters(0.25, 0.0)};
   return sets;
 }
 
 void expectRgbNear(const Rgb& actual, const Rgb& expected, double relative, const std::string& where) {
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(actual[c], expected[c], relative * std::abs(expected[c]) + 1e-300) << where << " channel " << c;
+    EXPECT_NEAR(actual[c], expected[c], relative * std::abs(expected[c]) + 1e-300)
+        << where << " channel " << c;
 }
 
-template <typename Lobe>
-void expectLobeMatches(Lobe lobe) {
+template <typename Lobe> void expectLobeMatches(Lobe lobe) {
   for (size_t s = 0; s < parameterSets().size(); ++s) {
     const DisneyParameters& p = parameterSets()[s];
     const DisneyTerms<double> terms = disneyTerms(p);
@@ -200,7 +207,8 @@ TEST(Disney, NormalIncidenceHasItsClosedForm) {
   const double alpha = 0.25;  // roughness 0.5, isotropic
   const double a = 0.1 + 0.5 * (0.001 - 0.1);
   const double dGtr1 = (a * a - 1.0) / (Pi * std::log(a * a) * a * a);
-  const Rgb expected = p.baseColor / Pi + Rgb(0.04 / (4.0 * Pi * alpha * alpha)) + Rgb(0.25 * 0.04 * dGtr1 / 4.0);
+  const Rgb expected =
+      p.baseColor / Pi + Rgb(0.04 / (4.0 * Pi * alpha * alpha)) + Rgb(0.25 * 0.04 * dGtr1 / 4.0);
   expectRgbNear(DisneyBsdf(p).eval(n, n), expected, 1e-12, "normal incidence");
 }
 
@@ -265,8 +273,16 @@ TEST(Disney, KernelWithJetsMatchesDoubleAndHasFiniteDerivatives) {
   const auto toJet = [](const DisneyParameters& p) {
     return DisneyParametersT<Jet>{
         RgbT<Jet>(Jet(p.baseColor.x, 0), Jet(p.baseColor.y, 1), Jet(p.baseColor.z, 2)),
-        Jet(p.metallic, 3), Jet(p.subsurface, 4), Jet(p.specular, 5), Jet(p.specularTint, 6), Jet(p.roughness, 7),
-        Jet(p.anisotropic, 8), Jet(p.sheen, 9), Jet(p.sheenTint, 10), Jet(p.clearcoat, 11), Jet(p.clearcoatGloss, 12)};
+        Jet(p.metallic, 3),
+        Jet(p.subsurface, 4),
+        Jet(p.specular, 5),
+        Jet(p.specularTint, 6),
+        Jet(p.roughness, 7),
+        Jet(p.anisotropic, 8),
+        Jet(p.sheen, 9),
+        Jet(p.sheenTint, 10),
+        Jet(p.clearcoat, 11),
+        Jet(p.clearcoatGloss, 12)};
   };
   const auto vecJet = [](const Vec3d& v) { return Vec3<Jet>(Jet(v.x), Jet(v.y), Jet(v.z)); };
   DisneyParameters black = parameters(0.0, 0.9);
@@ -321,9 +337,12 @@ TEST(Disney, RegistryDefaultsAreTheBrdfExplorers) {
 }
 
 TEST(Disney, RegistryRejectsOutOfRangeValues) {
-  for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
-           {"roughness", 1.5}, {"metallic", -0.1}, {"baseColor", {1.2, 0.5, 0.5}}, {"clearcoatGloss", 2},
-           {"anisotropic", "high"}}) {
+  for (const auto& [key, value] :
+       std::vector<std::pair<std::string, nlohmann::json>>{{"roughness", 1.5},
+                                                           {"metallic", -0.1},
+                                                           {"baseColor", {1.2, 0.5, 0.5}},
+                                                           {"clearcoatGloss", 2},
+                                                           {"anisotropic", "high"}}) {
     try {
       makeBsdf({{"type", "disney"}, {key, value}});
       ADD_FAILURE() << key << " = " << value.dump() << " was accepted";
@@ -355,7 +374,8 @@ double albedoByQuadrature(const BsdfModel& model, double thetaDeg) {
   QuadratureOptions q;
   q.absoluteTolerance = 1e-9;
   double albedo = 0.0;
-  for (const glm::dvec4& cell : integrateCells(grid, bsdfEnergyIntegrand(model, wi), probes, q)) albedo += cell.y;
+  for (const glm::dvec4& cell : integrateCells(grid, bsdfEnergyIntegrand(model, wi), probes, q))
+    albedo += cell.y;
   return albedo;
 }
 

@@ -5,8 +5,8 @@
 #include "materials/bsdf/eon.h"
 
 #include <ceres/jet.h>
-#include <cstdio>
 #include <gtest/gtest.h>
+#include <cstdio>
 
 #include "catalog_suite.h"
 #include "materials/core/quadrature.h"
@@ -51,15 +51,20 @@ double paperEon(double rho, double r, double thetaI, double phiI, double thetaO,
 TEST(Eon, EqualsThePapersExpressions) {
   for (const bool fitted : {true, false})
     for (const double r : {0.0, 0.3, 1.0})
-      for (const auto& [ti, pi, to, po] : std::vector<std::array<double, 4>>{
-               {10, 0, 50, 20}, {70, 30, 20, 10}, {85, 0, 80, 180}, {40, 90, 60, 250}, {60, 0, 60, 0}, {1, 0, 30, 0}}) {
+      for (const auto& [ti, pi, to, po] : std::vector<std::array<double, 4>>{{10, 0, 50, 20},
+                                                                             {70, 30, 20, 10},
+                                                                             {85, 0, 80, 180},
+                                                                             {40, 90, 60, 250},
+                                                                             {60, 0, 60, 0},
+                                                                             {1, 0, 30, 0}}) {
         const Vec3d wi = directionFromDegrees(ti, pi), wo = directionFromDegrees(to, po);
         const double expected = paperEon(0.7, r, radians(ti), radians(pi), radians(to), radians(po), fitted);
         const EonBsdf model(Rgb(0.7), r, fitted ? EonAlbedo::Fitted : EonAlbedo::Analytic);
         EXPECT_NEAR(model.eval(wi, wo).x, expected, 1e-13) << ti << " " << to << " r " << r;
       }
   // r = 0 is Lambert.
-  EXPECT_DOUBLE_EQ(EonBsdf(Rgb(0.7), 0.0).eval(directionFromDegrees(30, 0), directionFromDegrees(70, 100)).x, 0.7 / Pi);
+  EXPECT_DOUBLE_EQ(EonBsdf(Rgb(0.7), 0.0).eval(directionFromDegrees(30, 0), directionFromDegrees(70, 100)).x,
+                   0.7 / Pi);
   EXPECT_EQ(EonBsdf(Rgb(0.7), 0.5).eval(directionFromDegrees(30, 0), Vec3d(0.6, 0, -0.8)), Rgb(0.0));
   EXPECT_FALSE(EonBsdf(Rgb(0.7), 0.5).sample(Vec3d(0, 0, -1), 0.5, {0.5, 0.5}));
 }
@@ -150,7 +155,8 @@ TEST(Eon, IsReciprocal) {
     const EonBsdf model(Rgb(0.9, 0.5, 0.2), 0.8, albedo);
     CounterRng rng(31, 0);
     for (int n = 0; n < 2000; ++n) {
-      const Vec3d wi = sampleUniformHemisphere(rng.uniform2D()), wo = sampleUniformHemisphere(rng.uniform2D());
+      const Vec3d wi = sampleUniformHemisphere(rng.uniform2D()),
+                  wo = sampleUniformHemisphere(rng.uniform2D());
       const Rgb x = model.eval(wi, wo), y = model.eval(wo, wi);
       for (int c = 0; c < 3; ++c) ASSERT_LE(relativeDifference(x[c], y[c]), 1e-13);
     }
@@ -197,7 +203,8 @@ TEST(Eon, ClippedLtcSamplingBeatsCosineSampling) {
       cosineSumSq += c * c;
     }
     const double variance = sumSq / n - sqr(sum / n), cosineVariance = cosineSumSq / n - sqr(cosineSum / n);
-    std::printf("EON r = 1, theta %g: weight variance CLTC %.3e, cosine %.3e\n", theta, variance, cosineVariance);
+    std::printf("EON r = 1, theta %g: weight variance CLTC %.3e, cosine %.3e\n", theta, variance,
+                cosineVariance);
     EXPECT_LT(variance, 0.5 * cosineVariance) << theta;
   }
 }

@@ -41,7 +41,9 @@ TEST(FresnelMoments, VanishForAnIndexMatchedInterface) {
 // 1 - 2 FM1(eta) = eta^2 (1 - 2 FM1(1 / eta)), an identity of the exact Fresnel terms.
 TEST(FresnelMoments, FirstMomentsOfBothSidesObeyTheEtendueRelation) {
   for (const double eta : {1.1, 1.3, 1.5, 2.4}) {
-    EXPECT_NEAR(1.0 - 2.0 * fresnelMoment(1, eta), eta * eta * (1.0 - 2.0 * fresnelMoment(1, 1.0 / eta)), 1e-10) << eta;
+    EXPECT_NEAR(1.0 - 2.0 * fresnelMoment(1, eta), eta * eta * (1.0 - 2.0 * fresnelMoment(1, 1.0 / eta)),
+                1e-10)
+        << eta;
     EXPECT_DOUBLE_EQ(diffuseFresnelReflectance(eta), 2.0 * fresnelMoment(1, eta));
   }
 }

@@ -113,16 +113,18 @@ TEST(FresnelJet, ConductorDerivativesAreFiniteAndCorrect) {
   const double h = 1e-6;
   for (const double cosTheta : {0.0, 1e-6, 0.3, 0.8, 1.0}) {
     for (const auto& [n, k] : {std::pair{0.2, 3.9}, std::pair{1.5, 0.0}, std::pair{0.8, 0.0},
-                              std::pair{std::sqrt(1.0 - 0.3 * 0.3), 0.0}}) {
+                               std::pair{std::sqrt(1.0 - 0.3 * 0.3), 0.0}}) {
       const Jet f = fresnelConductor(Jet(cosTheta), Jet(n, 0), Jet(k, 1));
       ASSERT_TRUE(ceres::isfinite(f)) << "cos " << cosTheta << " n " << n << " k " << k;
       EXPECT_NEAR(f.a, fresnelConductor(cosTheta, n, k), 1e-15);
       const bool smooth = k > 0.0 || std::abs(n * n - (1.0 - cosTheta * cosTheta)) > 1e-3;
       if (!smooth) continue;
-      const double dn = (fresnelConductor(cosTheta, n + h, k) - fresnelConductor(cosTheta, n - h, k)) / (2 * h);
+      const double dn =
+          (fresnelConductor(cosTheta, n + h, k) - fresnelConductor(cosTheta, n - h, k)) / (2 * h);
       EXPECT_NEAR(f.v[0], dn, 1e-6 * std::max(1.0, std::abs(dn)));
       if (k > h) {
-        const double dk = (fresnelConductor(cosTheta, n, k + h) - fresnelConductor(cosTheta, n, k - h)) / (2 * h);
+        const double dk =
+            (fresnelConductor(cosTheta, n, k + h) - fresnelConductor(cosTheta, n, k - h)) / (2 * h);
         EXPECT_NEAR(f.v[1], dk, 1e-6 * std::max(1.0, std::abs(dk)));
       }
     }
@@ -136,7 +138,8 @@ TEST(FresnelJet, DielectricDerivativesAreFiniteAndCorrect) {
       const Jet f = fresnelDielectric(Jet(cosTheta), Jet(eta, 0));
       ASSERT_TRUE(ceres::isfinite(f)) << "cos " << cosTheta << " eta " << eta;
       EXPECT_NEAR(f.a, fresnelDielectric(cosTheta, eta), 1e-15);
-      const double de = (fresnelDielectric(cosTheta, eta + h) - fresnelDielectric(cosTheta, eta - h)) / (2 * h);
+      const double de =
+          (fresnelDielectric(cosTheta, eta + h) - fresnelDielectric(cosTheta, eta - h)) / (2 * h);
       if (std::abs(cosTheta) > 0.5) {
         EXPECT_NEAR(f.v[0], de, 1e-6);
       }

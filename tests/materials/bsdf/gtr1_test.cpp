@@ -38,7 +38,8 @@ double projectedIntegral(double alpha) {
 
 TEST(Gtr1, IsNormalisedAgainstCosTheta) {
   // 0.99999 is inside the series branch of (alpha^2 - 1) / ln(alpha^2), 1 is its limit.
-  for (double alpha : {0.001, 0.01, 0.1, 0.5, 0.99999, 1.0}) EXPECT_NEAR(projectedIntegral(alpha), 1.0, 1e-8) << alpha;
+  for (double alpha : {0.001, 0.01, 0.1, 0.5, 0.99999, 1.0})
+    EXPECT_NEAR(projectedIntegral(alpha), 1.0, 1e-8) << alpha;
 }
 
 TEST(Gtr1, MatchesBurleysFormulaAtFixedNormals) {
@@ -50,7 +51,8 @@ TEST(Gtr1, MatchesBurleysFormulaAtFixedNormals) {
       const double expected = (a2 - 1.0) / (Pi * std::log(a2) * (1.0 + (a2 - 1.0) * c * c));
       // The paper's 1 + (alpha^2 - 1) cos^2 cancels near the pole (relative error ~1e-16 / alpha^2);
       // gtr1.h writes it as sin^2 + alpha^2 cos^2.
-      EXPECT_NEAR(d.D(directionFromDegrees(thetaDeg, 40)), expected, 1e-9 * expected) << alpha << " " << thetaDeg;
+      EXPECT_NEAR(d.D(directionFromDegrees(thetaDeg, 40)), expected, 1e-9 * expected)
+          << alpha << " " << thetaDeg;
     }
   }
 }
@@ -100,23 +102,24 @@ ChiSquareOptions chiSquareOptions(const SamplerCase& c) {
   return o;
 }
 
-ChiSquareResult samplerAgainstPdf(const Gtr1Distribution<double>& sampler, const Gtr1Distribution<double>& density,
-                                  const ChiSquareOptions& o) {
+ChiSquareResult samplerAgainstPdf(const Gtr1Distribution<double>& sampler,
+                                  const Gtr1Distribution<double>& density, const ChiSquareOptions& o) {
   const auto draw = [&](CounterRng& rng) -> std::optional<DirectionSample> {
     const Vec3d m = sampler.sampleClassic(rng.uniform2D());
     const double pdf = density.pdfClassic(m);
     if (!(pdf > 0)) return std::nullopt;
     return DirectionSample{m, pdf};
   };
-  return sphericalChiSquareTest(draw, [&](const Vec3d& m) { return density.pdfClassic(m); }, o);
+  return sphericalChiSquareTest(
+      draw, [&](const Vec3d& m) { return density.pdfClassic(m); }, o);
 }
 
 TEST(Gtr1, SamplerFollowsItsPdf) {
   for (const SamplerCase& c : SamplerCases) {
     const Gtr1Distribution<double> d(c.alpha);
     const ChiSquareResult r = samplerAgainstPdf(d, d, chiSquareOptions(c));
-    EXPECT_TRUE(r.passed) << "alpha " << c.alpha << ": chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue
-                          << " " << r.failure;
+    EXPECT_TRUE(r.passed) << "alpha " << c.alpha << ": chi2 " << r.statistic << " dof " << r.dof << " p "
+                          << r.pValue << " " << r.failure;
   }
 }
 

@@ -39,8 +39,8 @@ std::unique_ptr<BsdfModel> conductor(MicrofacetType type, double ax, double ay, 
 // Schlick's F0 + (1 - F0)(1 - mu)^5 averages to F0 + 2 (1 - F0) B(2, 6) = (20 F0 + 1) / 21.
 TEST(FresnelAverage, OfSchlickIsTheClosedForm) {
   for (const double f0 : {0.0, 0.04, 0.5, 0.95})
-    EXPECT_NEAR(cosineWeightedAverage([&](double mu) { return fresnelSchlick(f0, mu); }), (20.0 * f0 + 1.0) / 21.0,
-                1e-12);
+    EXPECT_NEAR(cosineWeightedAverage([&](double mu) { return fresnelSchlick(f0, mu); }),
+                (20.0 * f0 + 1.0) / 21.0, 1e-12);
 }
 
 // k = 0 is a dielectric. Light arriving uniformly from either side of an interface: what is
@@ -66,7 +66,8 @@ TEST(FresnelAverage, OfAPerfectConductorIsOneAndGoldAgreesWithGaussLegendre) {
   const GaussLegendreRule<64>& rule = gaussLegendre<64>();
   for (int c = 0; c < 3; ++c) {
     double sum = 0.0;
-    for (int k = 0; k < 64; ++k) sum += rule.weights[k] * 2.0 * rule.nodes[k] * fresnelConductor(rule.nodes[k], GoldEta[c], GoldK[c]);
+    for (int k = 0; k < 64; ++k)
+      sum += rule.weights[k] * 2.0 * rule.nodes[k] * fresnelConductor(rule.nodes[k], GoldEta[c], GoldK[c]);
     EXPECT_NEAR(gold[c], sum, 1e-10) << c;
   }
   EXPECT_GT(gold.x, gold.z);  // gold is red
@@ -109,7 +110,8 @@ TEST(KullaConty, CompensatedEvalIsReciprocal) {
       const auto model = conductor(type, ax, ay, GoldEta, GoldK);
       CounterRng rng(17, 0);
       for (int n = 0; n < 500; ++n) {
-        const Vec3d wi = sampleUniformHemisphere(rng.uniform2D()), wo = sampleUniformHemisphere(rng.uniform2D());
+        const Vec3d wi = sampleUniformHemisphere(rng.uniform2D()),
+                    wo = sampleUniformHemisphere(rng.uniform2D());
         const Rgb a = model->eval(wi, wo), b = model->eval(wo, wi);
         for (int c = 0; c < 3; ++c) ASSERT_LE(relativeDifference(a[c], b[c]), 1e-12) << ax << " x " << ay;
       }
@@ -126,8 +128,10 @@ TEST(KullaConty, LobeSamplerIsNormalisedAndFollowsTheLobe) {
   options.relativeTolerance = 1e-7;
   options.absoluteTolerance = 1e-12;
   options.minDepth = 1;
-  for (const auto& [type, ax, ay] : std::vector<std::tuple<MicrofacetType, double, double>>{
-           {MicrofacetType::Beckmann, 0.001, 0.001}, {MicrofacetType::Ggx, 0.3, 0.3}, {MicrofacetType::Ggx, 0.05, 0.8}}) {
+  for (const auto& [type, ax, ay] :
+       std::vector<std::tuple<MicrofacetType, double, double>>{{MicrofacetType::Beckmann, 0.001, 0.001},
+                                                               {MicrofacetType::Ggx, 0.3, 0.3},
+                                                               {MicrofacetType::Ggx, 0.05, 0.8}}) {
     const KullaContyLobe lobe(WhiteMicrofacetAlbedo::shared(type, ax, ay));
     // Over (phi, mu): phi in the sampler's azimuth cells (its density has kinks at their
     // edges), mu split at 1e-6, 1e-4, 1e-2 to follow the lobe toward the horizon.
@@ -137,8 +141,11 @@ TEST(KullaConty, LobeSamplerIsNormalisedAndFollowsTheLobe) {
     for (int piece = 0; piece < phiPieces; ++piece)
       for (size_t k = 0; k + 1 < breaks.size(); ++k)
         total += adaptiveSimpson2D(
-            [&](double phi, double mu) { return lobe.pdf(sphericalDirection(safeSqrt(1.0 - mu * mu), mu, phi)); },
-            2.0 * Pi * piece / phiPieces, 2.0 * Pi * (piece + 1) / phiPieces, breaks[k], breaks[k + 1], options);
+            [&](double phi, double mu) {
+              return lobe.pdf(sphericalDirection(safeSqrt(1.0 - mu * mu), mu, phi));
+            },
+            2.0 * Pi * piece / phiPieces, 2.0 * Pi * (piece + 1) / phiPieces, breaks[k], breaks[k + 1],
+            options);
     EXPECT_NEAR(total, 1.0, 1e-5) << ax << " x " << ay;
     const Vec3d wi = directionFromDegrees(89.9, 30);
     const double loss = lobe.albedo().loss(wi);
@@ -155,7 +162,8 @@ TEST(KullaConty, LobeSamplerIsNormalisedAndFollowsTheLobe) {
 
 TEST(KullaConty, IsLosslessOnlyWhenCompensatedAndWhite) {
   EXPECT_TRUE(conductor(MicrofacetType::Ggx, 0.3, 0.3, WhiteEta, WhiteK)->isLossless());
-  EXPECT_FALSE(conductor(MicrofacetType::Ggx, 0.3, 0.3, WhiteEta, WhiteK, MultipleScattering::None)->isLossless());
+  EXPECT_FALSE(
+      conductor(MicrofacetType::Ggx, 0.3, 0.3, WhiteEta, WhiteK, MultipleScattering::None)->isLossless());
   EXPECT_FALSE(conductor(MicrofacetType::Ggx, 0.3, 0.3, GoldEta, GoldK)->isLossless());
   EXPECT_FALSE(conductor(MicrofacetType::Beckmann, 0.3, 0.3, Rgb(1.0), Rgb(1e8, 1e8, 30.0))->isLossless());
   const auto compensated = conductor(MicrofacetType::Ggx, 0.3, 0.3, GoldEta, GoldK);
@@ -193,14 +201,17 @@ TEST_P(KullaContyFurnace, WhiteConductorReflectsEverything) {
   singleOptions.relativeTolerance = singleOptions.absoluteTolerance = 1e-5;
   double worst = 0.0;
   std::vector<Vec3d> directions;
-  for (const double theta : {0.0, 30.0, 60.0, 85.0, 89.9}) directions.push_back(directionFromDegrees(theta, 30));
+  for (const double theta : {0.0, 30.0, 60.0, 85.0, 89.9})
+    directions.push_back(directionFromDegrees(theta, 30));
   if (c.ax != c.ay)
-    for (const auto& [theta, phi] : std::vector<std::pair<double, double>>{{85, 5}, {89.9, 5}, {60, 120}, {85, 260}})
+    for (const auto& [theta, phi] :
+         std::vector<std::pair<double, double>>{{85, 5}, {89.9, 5}, {60, 120}, {85, 260}})
       directions.push_back(directionFromDegrees(theta, phi));
   for (const Vec3d& wi : directions) {
     const double singleAlbedo =
-        c.type == MicrofacetType::Ggx ? whiteMicrofacetAlbedo(GgxDistribution<double>(c.ax, c.ay), wi, singleOptions)
-                                      : whiteMicrofacetAlbedo(BeckmannDistribution<double>(c.ax, c.ay), wi, singleOptions);
+        c.type == MicrofacetType::Ggx
+            ? whiteMicrofacetAlbedo(GgxDistribution<double>(c.ax, c.ay), wi, singleOptions)
+            : whiteMicrofacetAlbedo(BeckmannDistribution<double>(c.ax, c.ay), wi, singleOptions);
     // Split toward the horizon: at small alpha, 1 - E(wo) lives within mu_o ~ alpha of it.
     double lobeAlbedo = 0.0;
     const std::vector<double> breaks{0.0, 1e-4, 1e-3, 1e-2, 0.1, 1.0};
@@ -215,8 +226,8 @@ TEST_P(KullaContyFurnace, WhiteConductorReflectsEverything) {
     EXPECT_NEAR(albedo, 1.0, 0.005) << "theta " << degrees(std::acos(wi.z));
     worst = std::max(worst, std::abs(albedo - 1.0));
   }
-  std::printf("furnace %s %g x %g: max |albedo - 1| = %.2e\n", c.type == MicrofacetType::Ggx ? "GGX" : "Beckmann",
-              c.ax, c.ay, worst);
+  std::printf("furnace %s %g x %g: max |albedo - 1| = %.2e\n",
+              c.type == MicrofacetType::Ggx ? "GGX" : "Beckmann", c.ax, c.ay, worst);
 }
 
 std::vector<FurnaceCase> furnaceCases() {
@@ -241,8 +252,8 @@ std::string number(double x) {
 INSTANTIATE_TEST_SUITE_P(Grid, KullaContyFurnace, ::testing::ValuesIn(furnaceCases()),
                          [](const ::testing::TestParamInfo<FurnaceCase>& info) {
                            const FurnaceCase& c = info.param;
-                           return std::string(c.type == MicrofacetType::Ggx ? "Ggx_" : "Beckmann_") + number(c.ax) +
-                                  "x" + number(c.ay);
+                           return std::string(c.type == MicrofacetType::Ggx ? "Ggx_" : "Beckmann_") +
+                                  number(c.ax) + "x" + number(c.ay);
                          });
 
 // ---- The uncompensated model reports its loss ----
@@ -260,7 +271,8 @@ TEST(KullaConty, KitAlbedoRowReportsTheSingleScatteringLoss) {
   o.seed = 3;
   o.reciprocityPairs = 100;
   const CheckReport report = runBsdfChecks(*model, "white ggx 0.09", o);
-  const double expectedLoss = 1.0 - whiteMicrofacetAlbedo(GgxDistribution<double>(0.09, 0.09), directionFromDegrees(60, 30));
+  const double expectedLoss =
+      1.0 - whiteMicrofacetAlbedo(GgxDistribution<double>(0.09, 0.09), directionFromDegrees(60, 30));
   bool found = false;
   for (const CheckRow& row : report.rows) {
     if (row.test != "albedo") continue;
@@ -278,10 +290,14 @@ TEST(KullaConty, KitAlbedoRowReportsTheSingleScatteringLoss) {
 
 TEST(KullaConty, RegistryOptionBuildsTheCompensatedConductor) {
   EXPECT_EQ(completeMaterial({{"type", "conductor"}})["multiscatter"], "none");
-  const auto white = makeBsdf({{"type", "conductor"}, {"eta", 1.0}, {"k", 1e8}, {"multiscatter", "kulla-conty"}});
+  const auto white =
+      makeBsdf({{"type", "conductor"}, {"eta", 1.0}, {"k", 1e8}, {"multiscatter", "kulla-conty"}});
   EXPECT_TRUE(white->isLossless());
-  const auto gold = makeBsdf({{"type", "conductor"}, {"metal", "Au"}, {"multiscatter", "kulla-conty"},
-                              {"distribution", "beckmann"}, {"alpha", {0.2, 0.5}}});
+  const auto gold = makeBsdf({{"type", "conductor"},
+                              {"metal", "Au"},
+                              {"multiscatter", "kulla-conty"},
+                              {"distribution", "beckmann"},
+                              {"alpha", {0.2, 0.5}}});
   EXPECT_TRUE(hasAny(gold->flags(), LobeFlags::Diffuse));
   EXPECT_THROW(makeBsdf({{"type", "conductor"}, {"multiscatter", true}}), MaterialError);
   try {

@@ -3,8 +3,8 @@
 // lobes) with the extreme exponents and wi up to 89.9 degrees.
 #include <gtest/gtest.h>
 
-#include "materials/bsdf/lafortune.h"
 #include "catalog_suite.h"
+#include "materials/bsdf/lafortune.h"
 
 namespace scatterlab {
 namespace {
@@ -41,9 +41,10 @@ TEST(Lafortune, NganLobeMatchesPublishedFitFormula) {
 }
 
 TEST(Lafortune, SampleAgreesWithPdfAndFailsBelow) {
-  const LafortuneBsdf model(Rgb(0.2), {LafortuneLobe{Rgb(0.3), Vec3d(-1, -1, 1), 30.0},
-                                       LafortuneLobe{Rgb(0.2), Vec3d(0.8, 0.8, 0.9), 5.0}},
-                            LafortuneNormalization::Ngan);
+  const LafortuneBsdf model(
+      Rgb(0.2),
+      {LafortuneLobe{Rgb(0.3), Vec3d(-1, -1, 1), 30.0}, LafortuneLobe{Rgb(0.2), Vec3d(0.8, 0.8, 0.9), 5.0}},
+      LafortuneNormalization::Ngan);
   const Vec3d wi = directionFromDegrees(50, 10);
   for (double uLobe : {0.05, 0.5, 0.95}) {
     const auto s = model.sample(wi, uLobe, {0.4, 0.3});
@@ -63,12 +64,15 @@ struct LafortuneCase {
 
 std::vector<LafortuneCase> grid() {
   return {
-      {"ngan-blue-acrylic", Rgb(0.0145, 0.0332, 0.064), {{Rgb(0.0238, 0.0164, 0.01), Vec3d(-0.577, -0.577, 0.577), 4060.0}},
+      {"ngan-blue-acrylic",
+       Rgb(0.0145, 0.0332, 0.064),
+       {{Rgb(0.0238, 0.0164, 0.01), Vec3d(-0.577, -0.577, 0.577), 4060.0}},
        LafortuneNormalization::Ngan},
       {"ngan-n0", Rgb(0.3), {{Rgb(0.6), Vec3d(-1, -1, 1), 0.0}}, LafortuneNormalization::Ngan},
       {"ngan-n10000", Rgb(0.1), {{Rgb(0.9), Vec3d(-0.7, -0.7, 0.5), 10000.0}}, LafortuneNormalization::Ngan},
       {"raw-anisotropic", Rgb(0.2), {{Rgb(0.5), Vec3d(-0.9, -0.5, 0.7), 20.0}}, LafortuneNormalization::None},
-      {"ngan-two-lobes", Rgb(0.2),
+      {"ngan-two-lobes",
+       Rgb(0.2),
        {{Rgb(0.3), Vec3d(-1, -1, 1), 30.0}, {Rgb(0.2), Vec3d(0.8, 0.8, 0.9), 5.0}},
        LafortuneNormalization::Ngan},
   };
@@ -95,8 +99,14 @@ INSTANTIATE_TEST_SUITE_P(Grid, LafortuneKit, ::testing::ValuesIn(grid()),
                          });
 
 TEST(LafortuneControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected(
-      {{"type", "lafortune"}, {"kd", 0.2}, {"ks", 0.5}, {"cx", -0.8}, {"cy", -0.8}, {"cz", 0.9}, {"exponent", 30}}, 50.0);
+  catalog_suite::expectControlsRejected({{"type", "lafortune"},
+                                         {"kd", 0.2},
+                                         {"ks", 0.5},
+                                         {"cx", -0.8},
+                                         {"cy", -0.8},
+                                         {"cz", 0.9},
+                                         {"exponent", 30}},
+                                        50.0);
 }
 
 }  // namespace

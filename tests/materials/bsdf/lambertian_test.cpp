@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "materials/bsdf/lambertian.h"
 #include "catalog_suite.h"
+#include "materials/bsdf/lambertian.h"
 
 namespace scatterlab {
 namespace {
@@ -42,7 +42,8 @@ TEST(Lambertian, LosslessOnlyWhenWhite) {
     catalog_suite::registerChiSquareTests(int(catalog_suite::incidentAngles().size()));
 
 TEST(Lambertian, PassesTheKitFromNormalToGrazing) {
-  catalog_suite::expectPasses(LambertianBsdf(Rgb(1.0)), "lambertian-white", catalog_suite::options("lambertian-kit"));
+  catalog_suite::expectPasses(LambertianBsdf(Rgb(1.0)), "lambertian-white",
+                              catalog_suite::options("lambertian-kit"));
 }
 
 TEST(Lambertian, TwoSidedWrapperFlipsBackfacingDirections) {

@@ -27,8 +27,8 @@ MetalSpectra readShippedSpectra(const std::string& name) {
 // One line of the table in materials/bsdf/metals.cpp, ready to paste.
 std::string tableLine(const MetalIor& metal) {
   char line[256];
-  std::snprintf(line, sizeof line, "    {\"%s\", {%.10g, %.10g, %.10g}, {%.10g, %.10g, %.10g}},\n", metal.name,
-                metal.eta.x, metal.eta.y, metal.eta.z, metal.k.x, metal.k.y, metal.k.z);
+  std::snprintf(line, sizeof line, "    {\"%s\", {%.10g, %.10g, %.10g}, {%.10g, %.10g, %.10g}},\n",
+                metal.name, metal.eta.x, metal.eta.y, metal.eta.z, metal.k.x, metal.k.y, metal.k.z);
   return line;
 }
 
@@ -161,8 +161,8 @@ TEST(SpdReader, SkipsCommentsAndInterpolatesLinearly) {
 }
 
 TEST(SpdReader, RejectsMalformedInput) {
-  for (const char* text : {"400 1.0\n500\n", "400 1.0\n500 x\n", "400 1.0\n500 2.0 3.0\n", "500 1.0\n400 2.0\n",
-                           "500 1.0\n500 2.0\n", "400 1.0\n", "# only a comment\n"}) {
+  for (const char* text : {"400 1.0\n500\n", "400 1.0\n500 x\n", "400 1.0\n500 2.0 3.0\n",
+                           "500 1.0\n400 2.0\n", "500 1.0\n500 2.0\n", "400 1.0\n", "# only a comment\n"}) {
     std::istringstream in(text);
     EXPECT_THROW(parseSpd(in, "test"), std::runtime_error) << text;
   }

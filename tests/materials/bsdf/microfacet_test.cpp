@@ -14,15 +14,18 @@ struct Roughness {
   double x, y;
 };
 // The corners the test kit covers: near-specular, moderate, very rough, strongly anisotropic.
-constexpr Roughness Roughnesses[] = {{0.001, 0.001}, {0.01, 0.01}, {0.3, 0.3}, {1.0, 1.0}, {0.05, 0.8}, {0.8, 0.05}};
+constexpr Roughness Roughnesses[] = {{0.001, 0.001}, {0.01, 0.01}, {0.3, 0.3},
+                                     {1.0, 1.0},     {0.05, 0.8},  {0.8, 0.05}};
 
 // Incident directions from normal to 89.9 degrees, at azimuths that mix the two roughnesses.
 std::vector<Vec3d> incidentDirections() {
-  return {directionFromDegrees(0, 0),     directionFromDegrees(30, 20),  directionFromDegrees(60, 90),
-          directionFromDegrees(85, 37),   directionFromDegrees(89.9, 0), directionFromDegrees(89.9, 63)};
+  return {directionFromDegrees(0, 0),   directionFromDegrees(30, 20),  directionFromDegrees(60, 90),
+          directionFromDegrees(85, 37), directionFromDegrees(89.9, 0), directionFromDegrees(89.9, 63)};
 }
 
-template <typename Distribution> Distribution makeDistribution(const Roughness& r) { return Distribution(r.x, r.y); }
+template <typename Distribution> Distribution makeDistribution(const Roughness& r) {
+  return Distribution(r.x, r.y);
+}
 
 std::string describe(const Roughness& r, const Vec3d& w = Vec3d(0, 0, 1)) {
   return "alpha (" + std::to_string(r.x) + ", " + std::to_string(r.y) + "), w theta " +
@@ -34,8 +37,7 @@ std::string describe(const Roughness& r, const Vec3d& w = Vec3d(0, 0, 1)) {
 // d omega = ax ay r cos^3 theta_m dr dpsi (slopes: d omega = cos^3 theta_m dx dy), and
 // r = t / (1 - t) over t in [0, 1). An exact change of variables that gives every roughness
 // a lobe of width ~1, so the adaptive quadrature resolves alpha = 0.001 as well as alpha = 1.
-template <typename Distribution, typename F>
-double integrateOverNormals(const Distribution& d, const F& g) {
+template <typename Distribution, typename F> double integrateOverNormals(const Distribution& d, const F& g) {
   const double ax = d.alphaX(), ay = d.alphaY();
   const auto integrand = [&](double t, double psi) {
     if (t >= 1.0) return 0.0;
@@ -240,8 +242,8 @@ TYPED_TEST(MicrofacetDistributionTest, FiniteAtGrazingIncidence) {
   for (const Roughness& r : Roughnesses) {
     const auto d = makeDistribution<TypeParam>(r);
     for (const double cosTheta : {1e-4, 1e-8, 1e-12, 0.0}) {
-      const Vec3d w(std::sqrt(1.0 - cosTheta * cosTheta) * std::cos(0.3), std::sqrt(1.0 - cosTheta * cosTheta) * std::sin(0.3),
-                    cosTheta);
+      const Vec3d w(std::sqrt(1.0 - cosTheta * cosTheta) * std::cos(0.3),
+                    std::sqrt(1.0 - cosTheta * cosTheta) * std::sin(0.3), cosTheta);
       if (cosTheta > 0) {
         ASSERT_TRUE(std::isfinite(d.lambda(w))) << describe(r, w);
       } else {
@@ -275,7 +277,8 @@ TEST(MicrofacetLambda, MatchesTextbookForms) {
         const double a = 1.0 / alphaTan;
         const double beckmann = 0.5 * (std::erf(a) - 1.0) + std::exp(-a * a) / (2.0 * a * SqrtPi);
         EXPECT_NEAR(GgxDistribution<double>(r.x, r.y).lambda(w), ggx, 1e-12 * std::max(1.0, ggx));
-        EXPECT_NEAR(BeckmannDistribution<double>(r.x, r.y).lambda(w), beckmann, 1e-12 * std::max(1.0, beckmann));
+        EXPECT_NEAR(BeckmannDistribution<double>(r.x, r.y).lambda(w), beckmann,
+                    1e-12 * std::max(1.0, beckmann));
       }
     }
   }
@@ -321,7 +324,8 @@ template <template <typename> class Distribution> void checkJetDerivatives() {
     for (const Vec3d& w : directions) {
       const Jet values[] = {dj.D(toJet(w)), dj.G1(toJet(w)), dj.G2(toJet(w), toJet(directions[1])),
                             dj.visibleD(toJet(w), toJet(m)), dj.projectedArea(toJet(w))};
-      const double expected[] = {d.D(w), d.G1(w), d.G2(w, directions[1]), d.visibleD(w, m), d.projectedArea(w)};
+      const double expected[] = {d.D(w), d.G1(w), d.G2(w, directions[1]), d.visibleD(w, m),
+                                 d.projectedArea(w)};
       const double plus[] = {dxPlus.D(w), dxPlus.G1(w), dxPlus.G2(w, directions[1]), dxPlus.visibleD(w, m),
                              dxPlus.projectedArea(w)};
       const double minus[] = {dxMinus.D(w), dxMinus.G1(w), dxMinus.G2(w, directions[1]),
@@ -332,7 +336,8 @@ template <template <typename> class Distribution> void checkJetDerivatives() {
         const double finiteDifference = (plus[i] - minus[i]) / (2 * h);
         const double scale = std::max(1.0, std::abs(expected[i]) / r.x);
         if (r.x > 10 * h) {
-          EXPECT_NEAR(values[i].v[0], finiteDifference, 1e-5 * scale) << "quantity " << i << " " << describe(r, w);
+          EXPECT_NEAR(values[i].v[0], finiteDifference, 1e-5 * scale)
+              << "quantity " << i << " " << describe(r, w);
         }
       }
       if (w.z > 0) {

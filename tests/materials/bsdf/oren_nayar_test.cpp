@@ -2,8 +2,8 @@
 // kit from smooth (sigma 0, Lambertian) to the roughest sigma = pi/2, wi up to 89.9 degrees.
 #include <gtest/gtest.h>
 
-#include "materials/bsdf/oren_nayar.h"
 #include "catalog_suite.h"
+#include "materials/bsdf/oren_nayar.h"
 
 namespace scatterlab {
 namespace {
@@ -28,8 +28,9 @@ TEST(OrenNayar, EqualsTheAngleFormAndIsReciprocal) {
       EXPECT_DOUBLE_EQ(model.eval(wi, wo).x, model.eval(wo, wi).x);
     }
   }
-  EXPECT_DOUBLE_EQ(OrenNayarBsdf(Rgb(0.7), 0.0).eval(directionFromDegrees(30, 0), directionFromDegrees(60, 0)).x,
-                   0.7 / Pi);
+  EXPECT_DOUBLE_EQ(
+      OrenNayarBsdf(Rgb(0.7), 0.0).eval(directionFromDegrees(30, 0), directionFromDegrees(60, 0)).x,
+      0.7 / Pi);
   EXPECT_EQ(OrenNayarBsdf(Rgb(0.7), 0.3).eval(directionFromDegrees(30, 0), Vec3d(0, 0.6, -0.8)), Rgb(0.0));
   EXPECT_FALSE(OrenNayarBsdf(Rgb(0.7), 0.3).sample(Vec3d(0, 0, -1), 0.5, {0.5, 0.5}));
 }
@@ -46,7 +47,8 @@ class OrenNayarKit : public ::testing::TestWithParam<double> {};
 TEST_P(OrenNayarKit, PassesEveryCheck) {
   BsdfCheckOptions o = catalog_suite::options("oren-nayar-kit", 7);
   o.wiThetaDeg = KitAngles;
-  catalog_suite::expectPasses(OrenNayarBsdf(Rgb(1.0), GetParam()), "oren-nayar-" + std::to_string(GetParam()), o);
+  catalog_suite::expectPasses(OrenNayarBsdf(Rgb(1.0), GetParam()), "oren-nayar-" + std::to_string(GetParam()),
+                              o);
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, OrenNayarKit, ::testing::ValuesIn(KitSigmas),

@@ -3,8 +3,8 @@
 // the extreme exponents and wi up to 89.9 degrees.
 #include <gtest/gtest.h>
 
-#include "materials/bsdf/phong.h"
 #include "catalog_suite.h"
+#include "materials/bsdf/phong.h"
 
 namespace scatterlab {
 namespace {
@@ -30,7 +30,8 @@ TEST(Phong, MatchesLafortuneWillemsFormula) {
 TEST(BlinnPhong, MatchesNganFormulaAtFixedDirections) {
   const double kd = 0.0145, ks = 0.05, n = 300.0;
   const BlinnPhongBsdf model(Rgb(kd), Rgb(ks), n);
-  for (auto [ti, pi, to, po] : std::vector<std::array<double, 4>>{{30, 0, 32, 180}, {10, 40, 5, 200}, {60, 0, 58, 175}}) {
+  for (auto [ti, pi, to, po] :
+       std::vector<std::array<double, 4>>{{30, 0, 32, 180}, {10, 40, 5, 200}, {60, 0, 58, 175}}) {
     const Vec3d wi = directionFromDegrees(ti, pi), wo = directionFromDegrees(to, po);
     // f = rho_d / pi + rho_s (n+2)/(2 pi) (N.H)^n, H the half vector.
     const Vec3d sum = wi + wo;
@@ -85,18 +86,22 @@ TEST_P(PhongKit, PassesEveryCheck) {
   const PhongCase& c = GetParam();
   BsdfCheckOptions o = catalog_suite::options("phong-kit", 11);
   o.wiThetaDeg = KitAngles;
-  if (c.blinn) catalog_suite::expectPasses(BlinnPhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
-  else catalog_suite::expectPasses(PhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
+  if (c.blinn)
+    catalog_suite::expectPasses(BlinnPhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
+  else
+    catalog_suite::expectPasses(PhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, PhongKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<PhongCase>& info) { return name(info.param); });
 
 TEST(PhongControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected({{"type", "phong"}, {"kd", 0.3}, {"ks", 0.6}, {"exponent", 40}}, 30.0);
+  catalog_suite::expectControlsRejected({{"type", "phong"}, {"kd", 0.3}, {"ks", 0.6}, {"exponent", 40}},
+                                        30.0);
 }
 TEST(BlinnPhongControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected({{"type", "blinn-phong"}, {"kd", 0.2}, {"ks", 0.2}, {"exponent", 200}}, 70.0);
+  catalog_suite::expectControlsRejected(
+      {{"type", "blinn-phong"}, {"kd", 0.2}, {"ks", 0.2}, {"exponent", 200}}, 70.0);
 }
 
 }  // namespace

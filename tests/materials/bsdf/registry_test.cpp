@@ -79,7 +79,8 @@ TEST(MaterialRegistry, EveryModelBuildsFromItsTypeAlone) {
       continue;
     }
     const Rgb f = bsdf->eval(wi, wo);
-    for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(f[c]) && f[c] > 0) << "channel " << c << ": " << f[c];
+    for (int c = 0; c < 3; ++c)
+      EXPECT_TRUE(std::isfinite(f[c]) && f[c] > 0) << "channel " << c << ": " << f[c];
     EXPECT_GT(bsdf->pdf(wi, wo), 0.0);
   }
 }
@@ -104,9 +105,8 @@ TEST(MaterialRegistry, CompleteMaterialFillsEveryDefault) {
       }
     }
   }
-  const json conductorDefaults{
-      {"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.1},
-      {"metal", "Au"}, {"sampling", "visible"}, {"multiscatter", "none"}};
+  const json conductorDefaults{{"type", "conductor"}, {"distribution", "ggx"}, {"alpha", 0.1},
+                               {"metal", "Au"},       {"sampling", "visible"}, {"multiscatter", "none"}};
   EXPECT_EQ(completeMaterial(json{{"type", "conductor"}}), conductorDefaults);
   EXPECT_EQ(completeMaterial(json{{"type", "lambertian"}}), (json{{"type", "lambertian"}, {"albedo", 0.8}}));
 }
@@ -170,7 +170,8 @@ TEST_P(BadMaterialTest, IsRejectedWithAMessageNamingKeyValueAndAllowed) {
   const std::string message = materialErrorOf(bad.material);
   ASSERT_FALSE(message.empty()) << bad.what << ": no MaterialError for " << bad.material.dump();
   for (const std::string& fragment : bad.messageContains)
-    EXPECT_NE(message.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << message;
+    EXPECT_NE(message.find(fragment), std::string::npos)
+        << "\"" << fragment << "\" missing from: " << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
   // completeMaterial validates exactly as makeBsdf does.
   EXPECT_THROW(completeMaterial(bad.material), MaterialError);
@@ -182,45 +183,68 @@ const double Infinity = std::numeric_limits<double>::infinity();
 INSTANTIATE_TEST_SUITE_P(
     MaterialRegistry, BadMaterialTest,
     testing::Values(
-        BadMaterial{"negative roughness", {{"type", "conductor"}, {"alpha", -0.1}},
+        BadMaterial{"negative roughness",
+                    {{"type", "conductor"}, {"alpha", -0.1}},
                     {"\"alpha\"", "-0.1", "out of range", "[0.001, 1]", "[alpha_x, alpha_y]"}},
-        BadMaterial{"roughness above 1", {{"type", "conductor"}, {"alpha", 1.5}}, {"\"alpha\"", "1.5", "[0.001, 1]"}},
-        BadMaterial{"NaN roughness", {{"type", "conductor"}, {"alpha", NaN}}, {"\"alpha\"", "NaN", "[0.001, 1]"}},
-        BadMaterial{"infinite roughness", {{"type", "conductor"}, {"alpha", Infinity}},
+        BadMaterial{
+            "roughness above 1", {{"type", "conductor"}, {"alpha", 1.5}}, {"\"alpha\"", "1.5", "[0.001, 1]"}},
+        BadMaterial{
+            "NaN roughness", {{"type", "conductor"}, {"alpha", NaN}}, {"\"alpha\"", "NaN", "[0.001, 1]"}},
+        BadMaterial{"infinite roughness",
+                    {{"type", "conductor"}, {"alpha", Infinity}},
                     {"\"alpha\"", "inf", "[0.001, 1]"}},
-        BadMaterial{"one anisotropic component out of range", {{"type", "conductor"}, {"alpha", {0.3, -0.1}}},
+        BadMaterial{"one anisotropic component out of range",
+                    {{"type", "conductor"}, {"alpha", {0.3, -0.1}}},
                     {"\"alpha\"", "[0.3,-0.1]", "alpha_y = -0.1", "[0.001, 1]"}},
-        BadMaterial{"pair of the wrong length", {{"type", "conductor"}, {"alpha", {0.3}}},
+        BadMaterial{"pair of the wrong length",
+                    {{"type", "conductor"}, {"alpha", {0.3}}},
                     {"\"alpha\"", "[0.3]", "wrong type", "[alpha_x, alpha_y]"}},
-        BadMaterial{"roughness as a string", {{"type", "conductor"}, {"alpha", "rough"}},
+        BadMaterial{"roughness as a string",
+                    {{"type", "conductor"}, {"alpha", "rough"}},
                     {"\"alpha\"", "\"rough\"", "wrong type", "[0.001, 1]"}},
-        BadMaterial{"roughness null", {{"type", "conductor"}, {"alpha", nullptr}}, {"\"alpha\"", "null", "wrong type"}},
-        BadMaterial{"albedo above 1", {{"type", "lambertian"}, {"albedo", 1.5}}, {"\"albedo\"", "1.5", "[0, 1]"}},
-        BadMaterial{"albedo channel negative", {{"type", "lambertian"}, {"albedo", {0.5, -0.2, 0.5}}},
+        BadMaterial{"roughness null",
+                    {{"type", "conductor"}, {"alpha", nullptr}},
+                    {"\"alpha\"", "null", "wrong type"}},
+        BadMaterial{
+            "albedo above 1", {{"type", "lambertian"}, {"albedo", 1.5}}, {"\"albedo\"", "1.5", "[0, 1]"}},
+        BadMaterial{"albedo channel negative",
+                    {{"type", "lambertian"}, {"albedo", {0.5, -0.2, 0.5}}},
                     {"\"albedo\"", "[0.5,-0.2,0.5]", "g = -0.2", "[0, 1]"}},
-        BadMaterial{"albedo with two channels", {{"type", "lambertian"}, {"albedo", {0.5, 0.5}}},
+        BadMaterial{"albedo with two channels",
+                    {{"type", "lambertian"}, {"albedo", {0.5, 0.5}}},
                     {"\"albedo\"", "[0.5,0.5]", "wrong type", "[r, g, b]"}},
-        BadMaterial{"albedo as a boolean", {{"type", "lambertian"}, {"albedo", true}},
+        BadMaterial{"albedo as a boolean",
+                    {{"type", "lambertian"}, {"albedo", true}},
                     {"\"albedo\"", "true", "wrong type"}},
-        BadMaterial{"eta zero", {{"type", "conductor"}, {"eta", {1.0, 0.0, 1.0}}, {"k", 1.0}},
+        BadMaterial{"eta zero",
+                    {{"type", "conductor"}, {"eta", {1.0, 0.0, 1.0}}, {"k", 1.0}},
                     {"\"eta\"", "[1.0,0.0,1.0]", "g = 0", "> 0"}},
-        BadMaterial{"negative k", {{"type", "conductor"}, {"eta", 1.0}, {"k", -1.0}}, {"\"k\"", "-1", ">= 0"}},
-        BadMaterial{"unknown distribution", {{"type", "conductor"}, {"distribution", "phong"}},
+        BadMaterial{
+            "negative k", {{"type", "conductor"}, {"eta", 1.0}, {"k", -1.0}}, {"\"k\"", "-1", ">= 0"}},
+        BadMaterial{"unknown distribution",
+                    {{"type", "conductor"}, {"distribution", "phong"}},
                     {"\"distribution\"", "\"phong\"", "one of \"ggx\", \"beckmann\""}},
-        BadMaterial{"unknown metal", {{"type", "conductor"}, {"metal", "Pt"}},
+        BadMaterial{"unknown metal",
+                    {{"type", "conductor"}, {"metal", "Pt"}},
                     {"\"metal\"", "\"Pt\"", "\"Au\"", "\"Ag\"", "\"Al\"", "\"Cu\"", "\"Cr\""}},
-        BadMaterial{"sampling as a number", {{"type", "conductor"}, {"sampling", 3}},
+        BadMaterial{"sampling as a number",
+                    {{"type", "conductor"}, {"sampling", 3}},
                     {"\"sampling\"", "3", "wrong type", "\"visible\", \"classic\""}},
-        BadMaterial{"unknown model", {{"type", "plastic"}},
+        BadMaterial{"unknown model",
+                    {{"type", "plastic"}},
                     {"\"type\"", "\"plastic\"", "\"lambertian\"", "\"conductor\""}},
         BadMaterial{"type as a number", {{"type", 5}}, {"\"type\"", "5", "wrong type", "\"lambertian\""}},
         BadMaterial{"no type", {{"albedo", 0.5}}, {"\"type\"", "missing", "\"lambertian\"", "\"conductor\""}},
-        BadMaterial{"unknown key", {{"type", "conductor"}, {"roughness", 0.1}},
-                    {"\"roughness\"", "0.1", "\"conductor\"", "\"alpha\"", "\"distribution\"", "\"sampling\""}},
+        BadMaterial{
+            "unknown key",
+            {{"type", "conductor"}, {"roughness", 0.1}},
+            {"\"roughness\"", "0.1", "\"conductor\"", "\"alpha\"", "\"distribution\"", "\"sampling\""}},
         BadMaterial{"not an object", json::array({1, 2}), {"[1,2]", "object"}},
-        BadMaterial{"metal together with eta and k", {{"type", "conductor"}, {"metal", "Au"}, {"eta", 1.0}, {"k", 1.0}},
+        BadMaterial{"metal together with eta and k",
+                    {{"type", "conductor"}, {"metal", "Au"}, {"eta", 1.0}, {"k", 1.0}},
                     {"\"eta\"", "\"metal\"", "either \"metal\", or \"eta\" and \"k\" together"}},
-        BadMaterial{"eta without k", {{"type", "conductor"}, {"eta", {0.2, 0.4, 1.4}}},
+        BadMaterial{"eta without k",
+                    {{"type", "conductor"}, {"eta", {0.2, 0.4, 1.4}}},
                     {"\"eta\"", "[0.2,0.4,1.4]", "needs \"k\"", "\"eta\" and \"k\" together"}},
         BadMaterial{"k without eta", {{"type", "conductor"}, {"k", 3.0}}, {"\"k\"", "3", "needs \"eta\""}}),
     [](const testing::TestParamInfo<BadMaterial>& info) {
@@ -336,7 +360,8 @@ TEST(MaterialArgument, ParseErrorInAFileNamesTheFileAndPosition) {
 TEST(MaterialArgument, NaNInInlineJsonNamesTheKey) {
   const std::string message = loadErrorOf(R"({"type": "conductor", "alpha": NaN})");
   for (const char* fragment : {"\"alpha\"", "inline JSON", "line 1, column 32", "NaN"})
-    EXPECT_NE(message.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << message;
+    EXPECT_NE(message.find(fragment), std::string::npos)
+        << "\"" << fragment << "\" missing from: " << message;
 }
 
 TEST(MaterialArgument, NaNInsideAnArrayNamesTheKey) {

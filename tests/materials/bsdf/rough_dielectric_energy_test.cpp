@@ -56,7 +56,8 @@ TEST_P(RoughDielectricAlbedo, AgreesWithSphereQuadrature) {
   const auto model = makeRoughDielectric(c.type, c.alpha, c.alpha, Eta);
   const LobeAlbedo sphere = sphereQuadrature(*model, wi);
   const LobeAlbedo e = c.type == MicrofacetType::Ggx
-                           ? roughDielectricAlbedo(GgxDistribution<double>(c.alpha, c.alpha), Eta, wi, TransportMode::Importance)
+                           ? roughDielectricAlbedo(GgxDistribution<double>(c.alpha, c.alpha), Eta, wi,
+                                                   TransportMode::Importance)
                            : roughDielectricAlbedo(BeckmannDistribution<double>(c.alpha, c.alpha), Eta, wi,
                                                    TransportMode::Importance);
   EXPECT_NEAR(e.reflection, sphere.reflection, 2e-4);
@@ -83,12 +84,15 @@ TEST(RoughDielectricEnergy, SingleScatteringLossGrowsWithRoughnessOnBothSides) {
   std::printf("  alpha  wi(deg)      E_R      E_T        E   loss\n");
   for (const double theta : Angles) {
     const Vec3d wi = directionFromDegrees(theta, 30);
-    double previous = roughDielectricAlbedo(GgxDistribution<double>(0.001, 0.001), Eta, wi, TransportMode::Importance).total();
+    double previous =
+        roughDielectricAlbedo(GgxDistribution<double>(0.001, 0.001), Eta, wi, TransportMode::Importance)
+            .total();
     EXPECT_GT(previous, 0.997) << "alpha 0.001, wi " << theta;
     for (const double alpha : Alphas) {
-      const LobeAlbedo e = roughDielectricAlbedo(GgxDistribution<double>(alpha, alpha), Eta, wi, TransportMode::Importance);
-      std::printf("  %5.2f  %7.1f  %7.4f  %7.4f  %7.4f  %4.1f%%\n", alpha, theta, e.reflection, e.transmission,
-                  e.total(), 100 * (1 - e.total()));
+      const LobeAlbedo e =
+          roughDielectricAlbedo(GgxDistribution<double>(alpha, alpha), Eta, wi, TransportMode::Importance);
+      std::printf("  %5.2f  %7.1f  %7.4f  %7.4f  %7.4f  %4.1f%%\n", alpha, theta, e.reflection,
+                  e.transmission, e.total(), 100 * (1 - e.total()));
       EXPECT_LT(e.total(), previous) << "alpha " << alpha << ", wi " << theta;
       previous = e.total();
     }

@@ -33,7 +33,10 @@ std::string name(const DielectricCase& c) {
 }
 
 json material(const DielectricCase& c) {
-  return {{"type", "rough-dielectric"}, {"distribution", c.distribution}, {"alpha", {c.alphaX, c.alphaY}}, {"eta", c.eta}};
+  return {{"type", "rough-dielectric"},
+          {"distribution", c.distribution},
+          {"alpha", {c.alphaX, c.alphaY}},
+          {"eta", c.eta}};
 }
 
 const std::vector<DielectricCase>& grid() {
@@ -52,7 +55,8 @@ constexpr int AnglesPerCase = 7;
 
 constexpr size_t GridSamples = 250'000;
 
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(int(grid().size()) * AnglesPerCase);
+[[maybe_unused]] const int RegisteredTests =
+    catalog_suite::registerChiSquareTests(int(grid().size()) * AnglesPerCase);
 
 class RoughDielectricKit : public ::testing::TestWithParam<DielectricCase> {};
 
@@ -70,7 +74,9 @@ TEST_P(RoughDielectricKit, PassesEveryCheckFromBothSides) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, RoughDielectricKit, ::testing::ValuesIn(grid()),
-                         [](const ::testing::TestParamInfo<DielectricCase>& info) { return name(info.param); });
+                         [](const ::testing::TestParamInfo<DielectricCase>& info) {
+                           return name(info.param);
+                         });
 
 // The negative controls at one incident angle (above 90: from inside). Every control must be
 // rejected: none of them is a no-op for this model (its pdf is not symmetric in wi and wo,
@@ -90,7 +96,7 @@ TEST_P(RoughDielectricNegativeControls, AreAllRejected) {
   BsdfCheckOptions o = catalog_suite::options("controls");
   o.wiThetaDeg = {c.wiTheta};
   o.transmissionFromBelow = false;  // the side is the case's
-  o.thetaBins = 32;  // coarser cells hold more samples each: no loss of power for these errors
+  o.thetaBins = 32;                 // coarser cells hold more samples each: no loss of power for these errors
   o.phiBins = 64;
   o.imageDir.reset();
   const CheckReport report = runNegativeControls(*model, sampler.get(), name(c.dielectric), o);
@@ -106,7 +112,8 @@ INSTANTIATE_TEST_SUITE_P(Controls, RoughDielectricNegativeControls,
                                            ControlCase{{"ggx", 0.3, 0.1, 1.5}, 150.0},
                                            ControlCase{{"beckmann", 0.2, 0.2, 2.4}, 120.0}),
                          [](const ::testing::TestParamInfo<ControlCase>& info) {
-                           return name(info.param.dielectric) + "_wi" + std::to_string(int(info.param.wiTheta));
+                           return name(info.param.dielectric) + "_wi" +
+                                  std::to_string(int(info.param.wiTheta));
                          });
 
 }  // namespace

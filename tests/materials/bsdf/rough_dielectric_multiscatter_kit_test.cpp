@@ -44,7 +44,8 @@ struct Case {
 };
 
 std::string name(const Case& c) {
-  return std::string(c.distribution) + "_" + catalog_suite::number(c.alpha) + "_eta" + catalog_suite::number(c.eta);
+  return std::string(c.distribution) + "_" + catalog_suite::number(c.alpha) + "_eta" +
+         catalog_suite::number(c.eta);
 }
 
 json material(const char* distribution, double alpha, double eta) {
@@ -57,18 +58,30 @@ json material(const char* distribution, double alpha, double eta) {
 
 const std::vector<Case>& grid() {
   static const std::vector<Case> cases{
-      {"ggx", 0.001, 1.05, {0, 89.9}, false},     {"ggx", 0.001, 1.5, {60, 89.9}, true},
-      {"ggx", 0.001, 2.4, {30, 89.9}, false},     {"ggx", 0.1, 1.05, {85}, true},
-      {"ggx", 0.1, 1.5, {30}, false},             {"ggx", 0.1, 2.4, {89.9}, true},
-      {"ggx", 0.5, 1.05, {60}, false},            {"ggx", 0.5, 1.5, {89.9}, true},
-      {"ggx", 0.5, 2.4, {0}, false},              {"ggx", 1.0, 1.05, {0, 89.9}, true},
-      {"ggx", 1.0, 1.5, {30, 85}, false},         {"ggx", 1.0, 2.4, {60, 89.9}, true},
-      {"beckmann", 0.001, 1.05, {30, 85}, true},  {"beckmann", 0.001, 1.5, {0, 85}, false},
-      {"beckmann", 0.001, 2.4, {60, 85}, true},   {"beckmann", 0.1, 1.05, {89.9}, false},
-      {"beckmann", 0.1, 1.5, {60}, true},         {"beckmann", 0.1, 2.4, {85}, false},
-      {"beckmann", 0.5, 1.05, {0}, true},         {"beckmann", 0.5, 1.5, {85}, false},
-      {"beckmann", 0.5, 2.4, {30}, true},         {"beckmann", 1.0, 1.05, {60, 89.9}, false},
-      {"beckmann", 1.0, 1.5, {0, 89.9}, true},    {"beckmann", 1.0, 2.4, {30, 85}, false},
+      {"ggx", 0.001, 1.05, {0, 89.9}, false},
+      {"ggx", 0.001, 1.5, {60, 89.9}, true},
+      {"ggx", 0.001, 2.4, {30, 89.9}, false},
+      {"ggx", 0.1, 1.05, {85}, true},
+      {"ggx", 0.1, 1.5, {30}, false},
+      {"ggx", 0.1, 2.4, {89.9}, true},
+      {"ggx", 0.5, 1.05, {60}, false},
+      {"ggx", 0.5, 1.5, {89.9}, true},
+      {"ggx", 0.5, 2.4, {0}, false},
+      {"ggx", 1.0, 1.05, {0, 89.9}, true},
+      {"ggx", 1.0, 1.5, {30, 85}, false},
+      {"ggx", 1.0, 2.4, {60, 89.9}, true},
+      {"beckmann", 0.001, 1.05, {30, 85}, true},
+      {"beckmann", 0.001, 1.5, {0, 85}, false},
+      {"beckmann", 0.001, 2.4, {60, 85}, true},
+      {"beckmann", 0.1, 1.05, {89.9}, false},
+      {"beckmann", 0.1, 1.5, {60}, true},
+      {"beckmann", 0.1, 2.4, {85}, false},
+      {"beckmann", 0.5, 1.05, {0}, true},
+      {"beckmann", 0.5, 1.5, {85}, false},
+      {"beckmann", 0.5, 2.4, {30}, true},
+      {"beckmann", 1.0, 1.05, {60, 89.9}, false},
+      {"beckmann", 1.0, 1.5, {0, 89.9}, true},
+      {"beckmann", 1.0, 2.4, {30, 85}, false},
   };
   return cases;
 }
@@ -119,10 +132,12 @@ TEST_P(RoughDielectricMultiscatterControls, AreRejected) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Controls, RoughDielectricMultiscatterControls,
-                         ::testing::Values(ControlCase{"ggx", 0.5, 1.5, 60.0}, ControlCase{"beckmann", 1.0, 2.4, 150.0}),
+                         ::testing::Values(ControlCase{"ggx", 0.5, 1.5, 60.0},
+                                           ControlCase{"beckmann", 1.0, 2.4, 150.0}),
                          [](const ::testing::TestParamInfo<ControlCase>& info) {
-                           return std::string(info.param.distribution) + "_" + catalog_suite::number(info.param.alpha) +
-                                  "_eta" + catalog_suite::number(info.param.eta) + "_wi" +
+                           return std::string(info.param.distribution) + "_" +
+                                  catalog_suite::number(info.param.alpha) + "_eta" +
+                                  catalog_suite::number(info.param.eta) + "_wi" +
                                   std::to_string(int(info.param.wiTheta));
                          });
 

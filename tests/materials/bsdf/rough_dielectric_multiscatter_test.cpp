@@ -27,20 +27,22 @@ const char* name(MicrofacetType type) { return type == MicrofacetType::Ggx ? "Gg
 // The adaptive reference (rough_dielectric_albedo.h) of E = E_R + E_T at wi, importance.
 LobeAlbedo referenceAlbedo(MicrofacetType type, double alpha, double eta, const Vec3d& wi,
                            const QuadratureOptions& options = albedoQuadrature()) {
-  return type == MicrofacetType::Ggx
-             ? roughDielectricAlbedo(GgxDistribution<double>(alpha, alpha), eta, wi, TransportMode::Importance, options)
-             : roughDielectricAlbedo(BeckmannDistribution<double>(alpha, alpha), eta, wi, TransportMode::Importance,
-                                     options);
+  return type == MicrofacetType::Ggx ? roughDielectricAlbedo(GgxDistribution<double>(alpha, alpha), eta, wi,
+                                                             TransportMode::Importance, options)
+                                     : roughDielectricAlbedo(BeckmannDistribution<double>(alpha, alpha), eta,
+                                                             wi, TransportMode::Importance, options);
 }
 
 LobeAlbedo fixedRuleAlbedo(MicrofacetType type, double alpha, double eta, double mu, bool inside) {
   return type == MicrofacetType::Ggx
              ? roughDielectricAlbedoAboutIncidence(GgxDistribution<double>(alpha, alpha), eta, mu, inside)
-             : roughDielectricAlbedoAboutIncidence(BeckmannDistribution<double>(alpha, alpha), eta, mu, inside);
+             : roughDielectricAlbedoAboutIncidence(BeckmannDistribution<double>(alpha, alpha), eta, mu,
+                                                   inside);
 }
 
-std::unique_ptr<BsdfModel> dielectric(MicrofacetType type, double alpha, double eta,
-                                      MultipleScattering multipleScattering = MultipleScattering::KullaConty) {
+std::unique_ptr<BsdfModel> dielectric(
+    MicrofacetType type, double alpha, double eta,
+    MultipleScattering multipleScattering = MultipleScattering::KullaConty) {
   return makeRoughDielectric(type, alpha, alpha, eta, multipleScattering);
 }
 
@@ -54,14 +56,17 @@ class DielectricAlbedoQuadrature : public ::testing::TestWithParam<MicrofacetTyp
 
 TEST_P(DielectricAlbedoQuadrature, FixedRulesAgreeWithTheAdaptiveReference) {
   double worst = 0.0;
-  for (const auto& [alpha, eta] : std::vector<std::pair<double, double>>{{0.001, 1.5}, {0.05, 1.05}, {0.3, 2.4}, {1.0, 1.5}})
+  for (const auto& [alpha, eta] :
+       std::vector<std::pair<double, double>>{{0.001, 1.5}, {0.05, 1.05}, {0.3, 2.4}, {1.0, 1.5}})
     for (const bool inside : {false, true})
       for (const double mu : {1e-5, 0.02, 0.3, 0.745, 1.0}) {
         const Vec3d facing(safeSqrt(1.0 - mu * mu), 0.0, mu);
         const LobeAlbedo expected = referenceAlbedo(GetParam(), alpha, eta, inside ? -facing : facing);
         const LobeAlbedo e = fixedRuleAlbedo(GetParam(), alpha, eta, mu, inside);
-        EXPECT_NEAR(e.reflection, expected.reflection, 1e-4) << alpha << " " << eta << " " << mu << " " << inside;
-        EXPECT_NEAR(e.transmission, expected.transmission, 1e-4) << alpha << " " << eta << " " << mu << " " << inside;
+        EXPECT_NEAR(e.reflection, expected.reflection, 1e-4)
+            << alpha << " " << eta << " " << mu << " " << inside;
+        EXPECT_NEAR(e.transmission, expected.transmission, 1e-4)
+            << alpha << " " << eta << " " << mu << " " << inside;
         worst = std::max({worst, std::abs(e.reflection - expected.reflection),
                           std::abs(e.transmission - expected.transmission)});
       }
@@ -70,7 +75,9 @@ TEST_P(DielectricAlbedoQuadrature, FixedRulesAgreeWithTheAdaptiveReference) {
 
 INSTANTIATE_TEST_SUITE_P(Grid, DielectricAlbedoQuadrature,
                          ::testing::Values(MicrofacetType::Ggx, MicrofacetType::Beckmann),
-                         [](const ::testing::TestParamInfo<MicrofacetType>& info) { return name(info.param); });
+                         [](const ::testing::TestParamInfo<MicrofacetType>& info) {
+                           return name(info.param);
+                         });
 
 // ---- The per-material tables ----
 
@@ -80,7 +87,8 @@ struct TableCase {
 };
 
 std::string tableName(const TableCase& c) {
-  return std::string(name(c.type)) + "_" + catalog_suite::number(c.alpha) + "_eta" + catalog_suite::number(c.eta);
+  return std::string(name(c.type)) + "_" + catalog_suite::number(c.alpha) + "_eta" +
+         catalog_suite::number(c.eta);
 }
 
 std::vector<TableCase> tableCases() {
@@ -99,7 +107,8 @@ class DielectricAlbedoTables : public ::testing::TestWithParam<TableCase> {};
 
 TEST_P(DielectricAlbedoTables, InterpolationStaysWithinItsBound) {
   const TableCase& c = GetParam();
-  const RoughDielectricCompensation& compensation = *RoughDielectricCompensation::shared(c.type, c.alpha, c.eta);
+  const RoughDielectricCompensation& compensation =
+      *RoughDielectricCompensation::shared(c.type, c.alpha, c.eta);
   CounterRng rng(11, 0);
   for (const bool inside : {false, true}) {
     const DielectricAlbedoTable& table = compensation.albedo(inside);
@@ -117,7 +126,8 @@ TEST_P(DielectricAlbedoTables, InterpolationStaysWithinItsBound) {
 // rule on each node interval (the interpolant is a cubic in s there, smooth in mu).
 TEST_P(DielectricAlbedoTables, AverageLossIsTheIntegralOfTheInterpolant) {
   const TableCase& c = GetParam();
-  const RoughDielectricCompensation& compensation = *RoughDielectricCompensation::shared(c.type, c.alpha, c.eta);
+  const RoughDielectricCompensation& compensation =
+      *RoughDielectricCompensation::shared(c.type, c.alpha, c.eta);
   const GaussLegendreRule<64>& rule = gaussLegendre<64>();
   for (const bool inside : {false, true}) {
     const DielectricAlbedoTable& table = compensation.albedo(inside);
@@ -134,7 +144,9 @@ TEST_P(DielectricAlbedoTables, AverageLossIsTheIntegralOfTheInterpolant) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, DielectricAlbedoTables, ::testing::ValuesIn(tableCases()),
-                         [](const ::testing::TestParamInfo<TableCase>& info) { return tableName(info.param); });
+                         [](const ::testing::TestParamInfo<TableCase>& info) {
+                           return tableName(info.param);
+                         });
 
 // The compensation's tables hold the single-scattering E of rough_dielectric_energy_test's
 // table (GGX, eta 1.5, alpha 0.1 .. 1, outside and inside) within their bound.
@@ -181,11 +193,13 @@ TEST(DielectricAlbedoTable, UncompensatedModelLosesWhatTheTablesSay) {
 // the larger crossing flux: all of the outside's multiply scattered light crosses (r_out = 0)
 // wherever the inside loses more, which it does at every roughness and index here.
 TEST(RoughDielectricCompensation, SplitKeepsReciprocityWithSharesInTheUnitRange) {
-  for (const TableCase& c : {TableCase{MicrofacetType::Ggx, 0.3, 1.5}, TableCase{MicrofacetType::Beckmann, 1.0, 2.4},
-                             TableCase{MicrofacetType::Ggx, 1.0, 1.05}, TableCase{MicrofacetType::Beckmann, 0.01, 1.05}}) {
+  for (const TableCase& c :
+       {TableCase{MicrofacetType::Ggx, 0.3, 1.5}, TableCase{MicrofacetType::Beckmann, 1.0, 2.4},
+        TableCase{MicrofacetType::Ggx, 1.0, 1.05}, TableCase{MicrofacetType::Beckmann, 0.01, 1.05}}) {
     SCOPED_TRACE(tableName(c));
     const auto compensation = RoughDielectricCompensation::shared(c.type, c.alpha, c.eta);
-    const double lossOut = compensation->albedo(false).averageLoss(), lossIn = compensation->albedo(true).averageLoss();
+    const double lossOut = compensation->albedo(false).averageLoss(),
+                 lossIn = compensation->albedo(true).averageLoss();
     const double rOut = compensation->reflectionShare(false), rIn = compensation->reflectionShare(true);
     EXPECT_GE(rOut, 0.0);
     EXPECT_LE(rIn, 1.0);
@@ -211,11 +225,12 @@ TEST(RoughDielectricCompensation, EvalIsSingleScatteringPlusTheLobeWrittenOut) {
              {directionFromDegrees(40, 30), directionFromDegrees(150, 250)},   // out -> in
              {directionFromDegrees(100, 60), directionFromDegrees(10, 300)}})  // in -> out
       for (const TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
-        const bool fromInside = wi.z < 0, reflection = wi.z * wo.z > 0;
+        const bool fromInside = wi.z<0, reflection = wi.z * wo.z> 0;
         const DielectricAlbedoTable& own = fromInside ? in : out;
         const DielectricAlbedoTable& there = wo.z < 0 ? in : out;
         const double share = reflection ? c.reflectionShare(fromInside) : 1 - c.reflectionShare(fromInside);
-        double lobe = share * own.loss(std::abs(wi.z)) * there.loss(std::abs(wo.z)) / (Pi * there.averageLoss());
+        double lobe =
+            share * own.loss(std::abs(wi.z)) * there.loss(std::abs(wo.z)) / (Pi * there.averageLoss());
         // Radiance through the interface: divided by (n(wo) / n(wi))^2.
         if (!reflection && mode == TransportMode::Radiance) lobe /= sqr(fromInside ? 1 / Eta : Eta);
         const double expected = single->eval(wi, wo, mode).x + lobe;
@@ -231,7 +246,8 @@ TEST(RoughDielectricCompensation, EvalIsSingleScatteringPlusTheLobeWrittenOut) {
 // over the sphere: the compensated BSDF is reciprocal to round-off in both modes, and the
 // radiance BSDF is the adjoint of the importance one.
 TEST(RoughDielectricCompensation, GeneralisedReciprocityHoldsInBothModes) {
-  for (const TableCase& c : {TableCase{MicrofacetType::Ggx, 0.5, 1.5}, TableCase{MicrofacetType::Beckmann, 1.0, 2.4}}) {
+  for (const TableCase& c :
+       {TableCase{MicrofacetType::Ggx, 0.5, 1.5}, TableCase{MicrofacetType::Beckmann, 1.0, 2.4}}) {
     const auto model = dielectric(c.type, c.alpha, c.eta);
     for (const ReciprocityRelation relation :
          {ReciprocityRelation::Radiance, ReciprocityRelation::Importance, ReciprocityRelation::Adjoint}) {
@@ -326,17 +342,18 @@ TEST_P(RoughDielectricFurnace, ReturnsAllTheLightFromBothSides) {
     double lobeAlbedo = 0.0;
     std::vector<double> breaks{0.0};
     for (int k = 0; k <= 48; ++k) breaks.push_back(1e-7 * std::pow(10.0, k / 8.0));  // to 1e-1
-    for (int k = 1; k <= 45; ++k) breaks.push_back(0.1 + 0.02 * k);                   // to 1
+    for (int k = 1; k <= 45; ++k) breaks.push_back(0.1 + 0.02 * k);                  // to 1
     for (const double side : {1.0, -1.0})
       for (size_t k = 0; k + 1 < breaks.size(); ++k)
-        lobeAlbedo += 2.0 * Pi * adaptiveSimpson(
-                                     [&](double mu) {
-                                       const Vec3d wo(safeSqrt(1.0 - mu * mu), 0.0, side * mu);
-                                       return (model->eval(wi, wo, TransportMode::Importance).x -
-                                               single->eval(wi, wo, TransportMode::Importance).x) *
-                                              mu;
-                                     },
-                                     breaks[k], breaks[k + 1], options);
+        lobeAlbedo += 2.0 * Pi *
+                      adaptiveSimpson(
+                          [&](double mu) {
+                            const Vec3d wo(safeSqrt(1.0 - mu * mu), 0.0, side * mu);
+                            return (model->eval(wi, wo, TransportMode::Importance).x -
+                                    single->eval(wi, wo, TransportMode::Importance).x) *
+                                   mu;
+                          },
+                          breaks[k], breaks[k + 1], options);
     const double albedo = singleAlbedo + lobeAlbedo;
     EXPECT_NEAR(albedo, 1.0, 0.005) << "theta " << theta;
     EXPECT_NEAR(albedo, 1.0, 2e-4) << "theta " << theta;
@@ -467,7 +484,8 @@ TEST_P(RoughDielectricRandomWalk, SplitMatchesTheMicrosurface) {
     }
     const double p = double(single) / Paths;
     const double averageAlbedo = 1.0 - compensation->albedo(inside).averageLoss();
-    EXPECT_NEAR(p, averageAlbedo, 5.0 * std::sqrt(p * (1 - p) / Paths) + 1e-4) << (inside ? "inside" : "outside");
+    EXPECT_NEAR(p, averageAlbedo, 5.0 * std::sqrt(p * (1 - p) / Paths) + 1e-4)
+        << (inside ? "inside" : "outside");
     const double share = double(multipleCrossed) / multiple;
     const double modelShare = 1.0 - compensation->reflectionShare(inside);
     if (inside) {
@@ -477,9 +495,10 @@ TEST_P(RoughDielectricRandomWalk, SplitMatchesTheMicrosurface) {
       EXPECT_EQ(modelShare, 1.0);
     }
     crossing[inside] = double(multipleCrossed) / Paths;
-    std::printf("GGX alpha %g eta %g from %s: walk Ebar %.4f (table %.4f), crossing share of the rest %.4f "
-                "(scatterlab %.4f)\n",
-                c.alpha, c.eta, inside ? "inside" : "outside", p, averageAlbedo, share, modelShare);
+    std::printf(
+        "GGX alpha %g eta %g from %s: walk Ebar %.4f (table %.4f), crossing share of the rest %.4f "
+        "(scatterlab %.4f)\n",
+        c.alpha, c.eta, inside ? "inside" : "outside", p, averageAlbedo, share, modelShare);
   }
   // Reciprocity of the walk: 4 standard errors of the crossing fractions (~1e-3 each).
   EXPECT_NEAR(crossing[0], c.eta * c.eta * crossing[1], 4.0 * (1.0 + c.eta * c.eta) * std::sqrt(0.3 / Paths));
@@ -489,7 +508,8 @@ INSTANTIATE_TEST_SUITE_P(Grid, RoughDielectricRandomWalk,
                          ::testing::Values(WalkCase{0.3, 1.5}, WalkCase{1.0, 1.05}, WalkCase{1.0, 1.5},
                                            WalkCase{1.0, 2.4}),
                          [](const ::testing::TestParamInfo<WalkCase>& info) {
-                           return catalog_suite::number(info.param.alpha) + "_eta" + catalog_suite::number(info.param.eta);
+                           return catalog_suite::number(info.param.alpha) + "_eta" +
+                                  catalog_suite::number(info.param.eta);
                          });
 
 // ---- Registry ----
@@ -497,11 +517,15 @@ INSTANTIATE_TEST_SUITE_P(Grid, RoughDielectricRandomWalk,
 TEST(RoughDielectricCompensation, RegistryOptionDefaultsToNoneAndRejectsAnisotropy) {
   EXPECT_EQ(completeMaterial({{"type", "rough-dielectric"}})["multiscatter"], "none");
   EXPECT_FALSE(makeBsdf({{"type", "rough-dielectric"}})->isLossless());
-  const auto compensated = makeBsdf({{"type", "rough-dielectric"}, {"distribution", "beckmann"}, {"alpha", 0.4},
-                                     {"eta", 1.33}, {"multiscatter", "kulla-conty"}});
+  const auto compensated = makeBsdf({{"type", "rough-dielectric"},
+                                     {"distribution", "beckmann"},
+                                     {"alpha", 0.4},
+                                     {"eta", 1.33},
+                                     {"multiscatter", "kulla-conty"}});
   EXPECT_TRUE(compensated->isLossless());
   EXPECT_TRUE(hasAny(compensated->flags(), LobeFlags::Diffuse));
-  EXPECT_NO_THROW(makeBsdf({{"type", "rough-dielectric"}, {"alpha", {0.2, 0.2}}, {"multiscatter", "kulla-conty"}}));
+  EXPECT_NO_THROW(
+      makeBsdf({{"type", "rough-dielectric"}, {"alpha", {0.2, 0.2}}, {"multiscatter", "kulla-conty"}}));
   try {
     makeBsdf({{"type", "rough-dielectric"}, {"alpha", {0.05, 0.8}}, {"multiscatter", "kulla-conty"}});
     FAIL() << "expected MaterialError";
@@ -519,7 +543,8 @@ TEST(RoughDielectricCompensation, RegistryOptionDefaultsToNoneAndRejectsAnisotro
     EXPECT_NE(message.find("multiscatter"), std::string::npos) << message;
     EXPECT_NE(message.find("kulla-conty"), std::string::npos) << message;
   }
-  const auto path = std::filesystem::path(SCATTERLAB_DATA_DIR) / "materials" / "frosted-glass-multiscatter-ggx.json";
+  const auto path =
+      std::filesystem::path(SCATTERLAB_DATA_DIR) / "materials" / "frosted-glass-multiscatter-ggx.json";
   EXPECT_TRUE(makeBsdf(loadMaterialArgument(path.string()))->isLossless());
 }
 

@@ -27,7 +27,8 @@ struct Roughness {
 // tan^2 theta_m (cos^2 phi / ax^2 + sin^2 phi / ay^2) from the angles of m.
 double slopeTerm(const Roughness& r, const Vec3d& m) {
   const double theta = std::acos(m.z), phi = std::atan2(m.y, m.x);
-  return std::pow(std::tan(theta), 2) * (std::pow(std::cos(phi) / r.ax, 2) + std::pow(std::sin(phi) / r.ay, 2));
+  return std::pow(std::tan(theta), 2) *
+         (std::pow(std::cos(phi) / r.ax, 2) + std::pow(std::sin(phi) / r.ay, 2));
 }
 
 // GGX: 1 / (pi ax ay cos^4 (1 + t)^2) (eq. 33); Beckmann: exp(-t) / (pi ax ay cos^4) (eq. 25).
@@ -62,7 +63,8 @@ double walterFresnel(double c, double etaRel) {
   const double g2 = etaRel * etaRel - 1 + c * c;
   if (g2 < 0) return 1;
   const double g = std::sqrt(g2);
-  return std::pow(g - c, 2) / (2 * std::pow(g + c, 2)) * (1 + std::pow(c * (g + c) - 1, 2) / std::pow(c * (g - c) + 1, 2));
+  return std::pow(g - c, 2) / (2 * std::pow(g + c, 2)) *
+         (1 + std::pow(c * (g + c) - 1, 2) / std::pow(c * (g - c) + 1, 2));
 }
 
 // Walter's f_s(i, o) for light arriving from i and leaving toward o (radiance BSDF), with the
@@ -75,7 +77,8 @@ double walterBsdf(const Roughness& r, double eta, const Vec3d& i, const Vec3d& o
     const double c = std::abs(glm::dot(i, h));
     // D is of the facet's upward normal.
     const Vec3d m = h.z > 0 ? h : -h;
-    return walterFresnel(c, (i.z > 0 ? eta : 1 / eta)) * smithG2(r, i, o) * walterD(r, m) / (4 * std::abs(i.z * o.z));
+    return walterFresnel(c, (i.z > 0 ? eta : 1 / eta)) * smithG2(r, i, o) * walterD(r, m) /
+           (4 * std::abs(i.z * o.z));
   }
   const Vec3d ht = -glm::normalize(ni * i + no * o);
   const double ih = glm::dot(i, ht), oh = glm::dot(o, ht);
@@ -93,7 +96,9 @@ double expectedEval(const Roughness& r, double eta, const Vec3d& wi, const Vec3d
   return mode == TransportMode::Radiance ? walterBsdf(r, eta, wo, wi) : walterBsdf(r, eta, wi, wo);
 }
 
-std::unique_ptr<BsdfModel> make(const Roughness& r, double eta) { return makeRoughDielectric(r.type, r.ax, r.ay, eta); }
+std::unique_ptr<BsdfModel> make(const Roughness& r, double eta) {
+  return makeRoughDielectric(r.type, r.ax, r.ay, eta);
+}
 
 const std::vector<Roughness> Roughnesses{{MicrofacetType::Ggx, 0.3, 0.3},
                                          {MicrofacetType::Ggx, 0.5, 0.15},
@@ -110,9 +115,9 @@ const std::vector<Pair>& fixedPairs() {
       {directionFromDegrees(150, 20), directionFromDegrees(135, 210)},  // internal reflection
       {directionFromDegrees(30, 10), directionFromDegrees(160, 185)},   // refraction into the medium
       {directionFromDegrees(45, 0), directionFromDegrees(150, 200)},
-      {directionFromDegrees(165, 30), directionFromDegrees(20, 220)},   // refraction out of it
+      {directionFromDegrees(165, 30), directionFromDegrees(20, 220)},  // refraction out of it
       {directionFromDegrees(170, 0), directionFromDegrees(60, 170)},
-      {directionFromDegrees(85, 60), directionFromDegrees(120, 250)},   // grazing
+      {directionFromDegrees(85, 60), directionFromDegrees(120, 250)},  // grazing
   };
   return pairs;
 }
@@ -127,7 +132,8 @@ TEST(RoughDielectric, EvalIsWaltersEquationsFromBothSidesInBothModes) {
           const double expected = expectedEval(r, eta, p.wi, p.wo, mode);
           const double f = model->eval(p.wi, p.wo, mode).x;
           EXPECT_NEAR(f, expected, 1e-10 * expected + 1e-300)
-              << "eta " << eta << " alpha (" << r.ax << ", " << r.ay << ") wi.z " << p.wi.z << " wo.z " << p.wo.z;
+              << "eta " << eta << " alpha (" << r.ax << ", " << r.ay << ") wi.z " << p.wi.z << " wo.z "
+              << p.wo.z;
           if (p.wi.z * p.wo.z < 0 && expected > 0) ++refractionPairsWithValue;
         }
     }
@@ -162,7 +168,9 @@ TEST(RoughDielectric, GeneralisedReciprocity) {
     ++tested;
     // The reversed pair computes h from wo + wi / etaRel instead of wi + etaRel wo: equal up
     // to rounding, which Beckmann's exp(-tan^2 / alpha^2) amplifies in its far tail (1e-200).
-    EXPECT_LT(relativeDifference(fI / (no * no), model->eval(wo, wi, TransportMode::Importance).x / (ni * ni)), 1e-10);
+    EXPECT_LT(
+        relativeDifference(fI / (no * no), model->eval(wo, wi, TransportMode::Importance).x / (ni * ni)),
+        1e-10);
     EXPECT_LT(relativeDifference(model->eval(wi, wo, TransportMode::Radiance).x / (ni * ni),
                                  model->eval(wo, wi, TransportMode::Radiance).x / (no * no)),
               1e-10);
@@ -188,7 +196,8 @@ TEST(RoughDielectric, TotalInternalReflection) {
   const auto reflected = scatterRoughDielectric(ggx, eta, wi, m, false, TransportMode::Radiance);
   ASSERT_TRUE(reflected.has_value());
   EXPECT_NEAR(model->eval(wi, reflected->wo).x,
-              smithG2(r, wi, reflected->wo) * walterD(r, m) / (4 * wi.z * reflected->wo.z), 1e-9 * model->eval(wi, reflected->wo).x);
+              smithG2(r, wi, reflected->wo) * walterD(r, m) / (4 * wi.z * reflected->wo.z),
+              1e-9 * model->eval(wi, reflected->wo).x);
   // With alpha 0.02 the visible facets are within a few degrees of the normal, but GGX's long
   // tail holds a few tilted by more than 18 degrees, where the local incidence is below the
   // critical angle: a refracted sample must have come through such a facet, and they are rare.
@@ -272,12 +281,15 @@ TEST(RoughDielectricJet, DerivativesMatchCentralDifferences) {
     for (const Pair& p : fixedPairs())
       for (const TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
         const auto evalDouble = [&](double x, double y, double e) {
-          return beckmann ? roughDielectricEval<double>(BeckmannDistribution<double>(x, y), e, p.wi, p.wo, mode)
-                          : roughDielectricEval<double>(GgxDistribution<double>(x, y), e, p.wi, p.wo, mode);
+          return beckmann
+                     ? roughDielectricEval<double>(BeckmannDistribution<double>(x, y), e, p.wi, p.wo, mode)
+                     : roughDielectricEval<double>(GgxDistribution<double>(x, y), e, p.wi, p.wo, mode);
         };
         const Jet jx(ax, 0), jy(ay, 1), je(eta, 2);
-        const Jet f = beckmann ? roughDielectricEval<Jet>(BeckmannDistribution<Jet>(jx, jy), je, toJet(p.wi), toJet(p.wo), mode)
-                               : roughDielectricEval<Jet>(GgxDistribution<Jet>(jx, jy), je, toJet(p.wi), toJet(p.wo), mode);
+        const Jet f = beckmann ? roughDielectricEval<Jet>(BeckmannDistribution<Jet>(jx, jy), je, toJet(p.wi),
+                                                          toJet(p.wo), mode)
+                               : roughDielectricEval<Jet>(GgxDistribution<Jet>(jx, jy), je, toJet(p.wi),
+                                                          toJet(p.wo), mode);
         const double value = evalDouble(ax, ay, eta);
         ASSERT_TRUE(ceres::isfinite(f));
         EXPECT_NEAR(f.a, value, 1e-13 * std::max(1.0, value));
@@ -285,7 +297,8 @@ TEST(RoughDielectricJet, DerivativesMatchCentralDifferences) {
                             (evalDouble(ax, ay + h, eta) - evalDouble(ax, ay - h, eta)) / (2 * h),
                             (evalDouble(ax, ay, eta + h) - evalDouble(ax, ay, eta - h)) / (2 * h)};
         for (int k = 0; k < 3; ++k)
-          EXPECT_NEAR(f.v[k], d[k], 1e-5 * std::max(1.0, std::abs(d[k]))) << "parameter " << k << " wi.z " << p.wi.z;
+          EXPECT_NEAR(f.v[k], d[k], 1e-5 * std::max(1.0, std::abs(d[k])))
+              << "parameter " << k << " wi.z " << p.wi.z;
       }
 }
 
@@ -304,13 +317,13 @@ TEST(RoughDielectric, FlagsIndexAndEnergyHonesty) {
 TEST(RoughDielectric, RegistryDefaultsRangesAndExampleFiles) {
   const auto defaults = makeBsdf({{"type", "rough-dielectric"}});
   EXPECT_EQ(defaults->interiorIndex(), 1.5);
-  EXPECT_EQ(completeMaterial({{"type", "rough-dielectric"}}),
-            (nlohmann::json{{"type", "rough-dielectric"},
-                            {"distribution", "ggx"},
-                            {"alpha", 0.1},
-                            {"eta", 1.5},
-                            {"multiscatter", "none"}}));
-  EXPECT_NO_THROW(makeBsdf({{"type", "rough-dielectric"}, {"distribution", "beckmann"}, {"alpha", {0.001, 1.0}}, {"eta", 4.0}}));
+  EXPECT_EQ(completeMaterial({{"type", "rough-dielectric"}}), (nlohmann::json{{"type", "rough-dielectric"},
+                                                                              {"distribution", "ggx"},
+                                                                              {"alpha", 0.1},
+                                                                              {"eta", 1.5},
+                                                                              {"multiscatter", "none"}}));
+  EXPECT_NO_THROW(makeBsdf(
+      {{"type", "rough-dielectric"}, {"distribution", "beckmann"}, {"alpha", {0.001, 1.0}}, {"eta", 4.0}}));
   EXPECT_THROW(makeBsdf({{"type", "rough-dielectric"}, {"eta", 1.0}}), MaterialError);
   // Below 1.02 the refracted lobe is too narrow for the kit to check (registry.cpp).
   EXPECT_NO_THROW(makeBsdf({{"type", "rough-dielectric"}, {"eta", 1.02}}));

@@ -91,7 +91,8 @@ INSTANTIATE_TEST_SUITE_P(
     Controls, RoughPlasticNegativeControls,
     ::testing::Values(
         ControlCase{"GgxDark_wi0", {{"type", "rough-plastic"}, {"alpha", 0.3}, {"diffuse", 0.1}}, 0.0},
-        ControlCase{"GgxWhite_wi85", {{"type", "rough-plastic"}, {"alpha", 0.05}, {"diffuse", 1.0}, {"eta", 2.0}},
+        ControlCase{"GgxWhite_wi85",
+                    {{"type", "rough-plastic"}, {"alpha", 0.05}, {"diffuse", 1.0}, {"eta", 2.0}},
                     85.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 

@@ -70,7 +70,8 @@ TEST(DiffuseFresnel, MatchesAnIndependentQuadratureFromBothSides) {
 TEST(DiffuseFresnel, TransmittancesFromTheTwoSidesObeyTheEtendueIdentity) {
   for (double eta : {1.05, 1.2, 1.5, 1.8, 2.4, 3.0}) {
     SCOPED_TRACE(eta);
-    EXPECT_NEAR(1.0 - diffuseFresnelReflectance(eta), eta * eta * (1.0 - diffuseFresnelReflectance(1.0 / eta)), 1e-10);
+    EXPECT_NEAR(1.0 - diffuseFresnelReflectance(eta),
+                eta * eta * (1.0 - diffuseFresnelReflectance(1.0 / eta)), 1e-10);
   }
 }
 
@@ -88,7 +89,8 @@ TEST(DiffuseFresnel, InternalReflectanceAgreesWithEganHilgemansFit) {
 // E by an independent route: the importance-sampling estimator of the classic (D cos) scheme
 // integrated over its unit square, weight F G2 (wo.h) / (cos_i h.z), u.x = v^2 so that the
 // radial square root is smooth, by nested adaptive Simpson.
-template <typename Distribution> double albedoByClassicQuadrature(const Distribution& d, double eta, const Vec3d& wi) {
+template <typename Distribution>
+double albedoByClassicQuadrature(const Distribution& d, double eta, const Vec3d& wi) {
   const auto weight = [&](double v, double uy) {
     const Vec3d m = d.sampleClassic(Vec2d(v * v, uy));
     const Vec3d wo = reflect(wi, m);
@@ -105,8 +107,9 @@ TEST(CoatingAlbedo, QuadratureAgreesWithTheClassicSamplersIntegral) {
   struct Case {
     double alpha, eta, thetaDeg;
   };
-  for (const Case c : {Case{0.3, 1.5, 0}, Case{0.3, 1.5, 70}, Case{1.0, 2.4, 45}, Case{1.0, 1.1, 85},
-                       Case{0.1, 1.5, 30}, Case{0.001, 2.4, 89.9}, Case{0.01, 1.8, 89.9}, Case{0.05, 2.4, 89.9}}) {
+  for (const Case c :
+       {Case{0.3, 1.5, 0}, Case{0.3, 1.5, 70}, Case{1.0, 2.4, 45}, Case{1.0, 1.1, 85}, Case{0.1, 1.5, 30},
+        Case{0.001, 2.4, 89.9}, Case{0.01, 1.8, 89.9}, Case{0.05, 2.4, 89.9}}) {
     SCOPED_TRACE(testing::Message() << "alpha " << c.alpha << " eta " << c.eta << " theta " << c.thetaDeg);
     const Vec3d wi = directionFromDegrees(c.thetaDeg, 0);
     EXPECT_NEAR(dielectricReflectionAlbedo(Ggx(c.alpha, c.alpha), c.eta, wi),
@@ -139,7 +142,7 @@ TEST(CoatingAlbedo, TableIsWithin3e5OfTheQuadrature) {
         for (int k = 0; k <= 40; ++k) {
           const double mu = k == 0 ? std::cos(radians(89.9)) : std::pow(10.0, -4.0 + 4.0 * k / 40.0);
           const Vec3d wi(std::sqrt(1 - mu * mu), 0, mu);
-          worst = std::max(worst, std::abs((*table)(wi) - dielectricReflectionAlbedo(d, eta, wi)));
+          worst = std::max(worst, std::abs((*table)(wi)-dielectricReflectionAlbedo(d, eta, wi)));
         }
         EXPECT_LT(worst, 3e-5) << name << " alpha " << alpha << " eta " << eta;
       };
@@ -185,7 +188,8 @@ TEST(RoughPlastic, EvalMatchesTheFormulaWrittenOut) {
     const double D = 1.0 / (Pi * alpha * alpha * std::pow(h.z, 4) * std::pow(1 + tan2h / (alpha * alpha), 2));
     const double G2 = 1.0 / (1.0 + lambda(p.wi) + lambda(p.wo));
     const double specular = D * fresnelByHand(glm::dot(p.wi, h), eta) * G2 / (4 * p.wi.z * p.wo.z);
-    const double Ei = model.coatingAlbedo(p.wi), Eo = model.coatingAlbedo(p.wo), Ebar = model.coatingAlbedoAverage();
+    const double Ei = model.coatingAlbedo(p.wi), Eo = model.coatingAlbedo(p.wo),
+                 Ebar = model.coatingAlbedoAverage();
     const double fdrInt = 1.0 - (1.0 - Ebar) / (eta * eta);
     const Rgb f = model.eval(p.wi, p.wo);
     for (int c = 0; c < 3; ++c) {
@@ -216,8 +220,7 @@ TEST(RoughPlastic, DiffuseTermOfASmoothCoatingIsTheSmoothPlasticOne) {
 // Directional albedo of the model, independently of the table: E by the quadrature (within 2e-6
 // of the classic sampler's integral, tested above, grazing included) plus the diffuse part
 // integrated over the hemisphere of wo by nested adaptive Simpson.
-template <typename Distribution>
-Rgb albedoOf(const RoughPlasticBsdf<Distribution>& model, const Vec3d& wi) {
+template <typename Distribution> Rgb albedoOf(const RoughPlasticBsdf<Distribution>& model, const Vec3d& wi) {
   QuadratureOptions o;
   o.relativeTolerance = 1e-8;
   const auto diffuse = [&](double cosO, double phi) {
@@ -313,11 +316,13 @@ TEST(RoughPlastic, RegistryDefaultsAndRanges) {
   EXPECT_NE(dynamic_cast<const RoughPlasticBsdf<Beckmann>*>(
                 makeBsdf({{"type", "rough-plastic"}, {"distribution", "beckmann"}}).get()),
             nullptr);
-  for (const nlohmann::json& bad :
-       {nlohmann::json{{"type", "rough-plastic"}, {"alpha", 0.0}}, {{"type", "rough-plastic"}, {"alpha", 1.5}},
-        {{"type", "rough-plastic"}, {"alpha", {0.1, 0.2}}}, {{"type", "rough-plastic"}, {"eta", 1.0}},
-        {{"type", "rough-plastic"}, {"eta", 4.5}}, {{"type", "rough-plastic"}, {"diffuse", {0.5, 1.2, 0.5}}},
-        {{"type", "rough-plastic"}, {"distribution", "phong"}}}) {
+  for (const nlohmann::json& bad : {nlohmann::json{{"type", "rough-plastic"}, {"alpha", 0.0}},
+                                    {{"type", "rough-plastic"}, {"alpha", 1.5}},
+                                    {{"type", "rough-plastic"}, {"alpha", {0.1, 0.2}}},
+                                    {{"type", "rough-plastic"}, {"eta", 1.0}},
+                                    {{"type", "rough-plastic"}, {"eta", 4.5}},
+                                    {{"type", "rough-plastic"}, {"diffuse", {0.5, 1.2, 0.5}}},
+                                    {{"type", "rough-plastic"}, {"distribution", "phong"}}}) {
     EXPECT_THROW(makeBsdf(bad), MaterialError) << bad.dump();
   }
   try {

@@ -42,7 +42,8 @@ TEST(SmoothConductor, ReflectanceIsTheComplexFresnelEquations) {
       const auto s = model.sample(wi, 0.5, {0.5, 0.5});
       ASSERT_TRUE(s.has_value());
       for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(s->weight[c], complexFresnel(wi.z, eta[c], k[c]), 1e-12) << "theta " << theta << " channel " << c;
+        EXPECT_NEAR(s->weight[c], complexFresnel(wi.z, eta[c], k[c]), 1e-12)
+            << "theta " << theta << " channel " << c;
     }
   }
 }
@@ -87,9 +88,11 @@ TEST(SmoothConductor, RegistryBuildsFromAMetalOrFromEtaAndK) {
   const auto defaults = makeBsdf({{"type", "smooth-conductor"}});  // gold
   const MetalIor* gold = findMetal("Au");
   EXPECT_EQ(defaults->sample(wi, 0.5, {0.5, 0.5})->weight, fresnelConductor(wi.z, gold->eta, gold->k));
-  const auto direct = makeBsdf({{"type", "smooth-conductor"}, {"eta", {0.2, 0.9, 1.4}}, {"k", {3.9, 2.4, 1.6}}});
+  const auto direct =
+      makeBsdf({{"type", "smooth-conductor"}, {"eta", {0.2, 0.9, 1.4}}, {"k", {3.9, 2.4, 1.6}}});
   EXPECT_NEAR(direct->sample(wi, 0.5, {0.5, 0.5})->weight.x, complexFresnel(wi.z, 0.2, 3.9), 1e-12);
-  EXPECT_THROW(makeBsdf({{"type", "smooth-conductor"}, {"metal", "Au"}, {"eta", 1.0}, {"k", 1.0}}), MaterialError);
+  EXPECT_THROW(makeBsdf({{"type", "smooth-conductor"}, {"metal", "Au"}, {"eta", 1.0}, {"k", 1.0}}),
+               MaterialError);
   EXPECT_THROW(makeBsdf({{"type", "smooth-conductor"}, {"eta", 1.0}}), MaterialError);  // k missing
   EXPECT_THROW(makeBsdf({{"type", "smooth-conductor"}, {"eta", 0.0}, {"k", 1.0}}), MaterialError);
   EXPECT_THROW(makeBsdf({{"type", "smooth-conductor"}, {"metal", "Unobtainium"}}), MaterialError);
@@ -103,8 +106,9 @@ const std::vector<double> KitAngles{0, 60, 89.9};
 [[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(2 * int(KitAngles.size()));
 
 TEST(SmoothConductorKit, PassesEveryCheck) {
-  for (const json& material : {json{{"type", "smooth-conductor"}, {"metal", "Cu"}},
-                               json{{"type", "smooth-conductor"}, {"eta", {0.2, 1.1, 3.0}}, {"k", {3.9, 2.0, 0.0}}}}) {
+  for (const json& material :
+       {json{{"type", "smooth-conductor"}, {"metal", "Cu"}},
+        json{{"type", "smooth-conductor"}, {"eta", {0.2, 1.1, 3.0}}, {"k", {3.9, 2.0, 0.0}}}}) {
     const auto model = makeBsdf(material);
     BsdfCheckOptions o = catalog_suite::options("smooth-conductor-kit");
     o.wiThetaDeg = KitAngles;

@@ -29,7 +29,8 @@ const char* name(MicrofacetType type) { return type == MicrofacetType::Ggx ? "GG
 // Nodes at the corners of the table (alpha 0.001 and 1, mu near 0 and 1, mu = 1) and inside.
 TEST(WhiteMicrofacetAlbedoTable, RegeneratedEntriesMatchTheCommittedOnes) {
   constexpr int Last = WhiteAlbedoGrid::AlphaNodes - 1, LastCos = WhiteAlbedoGrid::CosNodes - 1;
-  const std::vector<std::pair<int, int>> ggxNodes{{0, 1}, {0, 15}, {0, LastCos}, {Last, 1}, {Last, LastCos}, {17, 9}};
+  const std::vector<std::pair<int, int>> ggxNodes{{0, 1},    {0, 15},         {0, LastCos},
+                                                  {Last, 1}, {Last, LastCos}, {17, 9}};
   const std::vector<std::pair<int, int>> beckmannNodes{{0, 14}, {Last, 2}, {Last, LastCos}, {21, 27}};
   for (const MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {
     const auto& table = whiteAlbedoTable(type);
@@ -75,7 +76,8 @@ TEST(WhiteMicrofacetAlbedoTable, GeneratorQuadratureAgreesWithAnIntegralOverWo) 
     const Vec3d wi = directionFromDegrees(theta, 0);
     const GgxDistribution<double> ggx(alpha, alpha);
     const BeckmannDistribution<double> beckmann(alpha, alpha);
-    EXPECT_NEAR(whiteMicrofacetAlbedo(ggx, wi), overWo(ggx, wi), GeneratorAccuracy) << "GGX " << alpha << " " << theta;
+    EXPECT_NEAR(whiteMicrofacetAlbedo(ggx, wi), overWo(ggx, wi), GeneratorAccuracy)
+        << "GGX " << alpha << " " << theta;
     EXPECT_NEAR(whiteMicrofacetAlbedo(beckmann, wi), overWo(beckmann, wi), GeneratorAccuracy)
         << "Beckmann " << alpha << " " << theta;
   }
@@ -87,15 +89,17 @@ TEST(WhiteMicrofacetAlbedoTable, InterpolationIsWithinItsStatedBound) {
   const auto centre = [](int i) { return (i + 0.5) / (WhiteAlbedoGrid::AlphaNodes - 1); };
   const auto cosCentre = [](int j) { return (j + 0.5) / (WhiteAlbedoGrid::CosNodes - 1); };
   for (const MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {
-    for (const auto& [i, j] : std::vector<std::pair<int, int>>{{0, 0}, {0, 13}, {0, 30}, {30, 0}, {30, 20}, {30, 30},
-                                                              {6, 28}, {14, 12}}) {
+    for (const auto& [i, j] : std::vector<std::pair<int, int>>{
+             {0, 0}, {0, 13}, {0, 30}, {30, 0}, {30, 20}, {30, 30}, {6, 28}, {14, 12}}) {
       const double alpha = WhiteAlbedoGrid::alphaAt(centre(i));
       const double mu = WhiteAlbedoGrid::cosAt(cosCentre(j), alpha);
       const Vec3d wi(safeSqrt(1.0 - mu * mu), 0.0, mu);
-      const double exact = type == MicrofacetType::Ggx ? whiteMicrofacetAlbedo(GgxDistribution<double>(alpha, alpha), wi)
-                                                        : whiteMicrofacetAlbedo(BeckmannDistribution<double>(alpha, alpha), wi);
+      const double exact = type == MicrofacetType::Ggx
+                               ? whiteMicrofacetAlbedo(GgxDistribution<double>(alpha, alpha), wi)
+                               : whiteMicrofacetAlbedo(BeckmannDistribution<double>(alpha, alpha), wi);
       const WhiteMicrofacetAlbedo table(type, alpha, alpha);
-      EXPECT_NEAR(table(wi), exact, type == MicrofacetType::Ggx ? GgxInterpolationBound : BeckmannInterpolationBound)
+      EXPECT_NEAR(table(wi), exact,
+                  type == MicrofacetType::Ggx ? GgxInterpolationBound : BeckmannInterpolationBound)
           << name(type) << " alpha " << alpha << " mu " << mu;
     }
   }
@@ -109,13 +113,14 @@ TEST(WhiteMicrofacetAlbedoTable, AnisotropicTableIsWithinItsStatedBound) {
     // Beckmann's visible-normal sampler costs ~10 times GGX's in the reference quadrature.
     const std::vector<std::pair<double, double>> directions =
         type == MicrofacetType::Ggx
-            ? std::vector<std::pair<double, double>>{{0, 30}, {30, 30}, {60, 30}, {85, 30}, {89.9, 30},
+            ? std::vector<std::pair<double, double>>{{0, 30}, {30, 30},  {60, 30}, {85, 30}, {89.9, 30},
                                                      {85, 5}, {89.9, 5}, {60, 75}, {85, 200}}
             : std::vector<std::pair<double, double>>{{60, 30}, {85, 30}, {89.9, 5}, {85, 200}};
     for (const auto& [theta, phi] : directions) {
       const Vec3d wi = directionFromDegrees(theta, phi);
-      const double exact = type == MicrofacetType::Ggx ? whiteMicrofacetAlbedo(GgxDistribution<double>(0.05, 0.8), wi)
-                                                        : whiteMicrofacetAlbedo(BeckmannDistribution<double>(0.05, 0.8), wi);
+      const double exact = type == MicrofacetType::Ggx
+                               ? whiteMicrofacetAlbedo(GgxDistribution<double>(0.05, 0.8), wi)
+                               : whiteMicrofacetAlbedo(BeckmannDistribution<double>(0.05, 0.8), wi);
       EXPECT_NEAR(table(wi), exact, 4e-3) << name(type) << " theta " << theta << " phi " << phi;
     }
   }
@@ -129,14 +134,19 @@ TEST(WhiteMicrofacetAlbedoTable, AverageLossIsTheIntegralOfTheInterpolant) {
   options.relativeTolerance = 1e-8;
   options.absoluteTolerance = 1e-14;
   options.minDepth = 4;
-  for (const auto& [type, ax, ay] : std::vector<std::tuple<MicrofacetType, double, double>>{
-           {MicrofacetType::Ggx, 0.3, 0.3}, {MicrofacetType::Beckmann, 0.02, 0.02}, {MicrofacetType::Ggx, 0.05, 0.8}}) {
+  for (const auto& [type, ax, ay] :
+       std::vector<std::tuple<MicrofacetType, double, double>>{{MicrofacetType::Ggx, 0.3, 0.3},
+                                                               {MicrofacetType::Beckmann, 0.02, 0.02},
+                                                               {MicrofacetType::Ggx, 0.05, 0.8}}) {
     const WhiteMicrofacetAlbedo albedo(type, ax, ay);
-    const double integral = adaptiveSimpson2D(
-        [&](double cosTheta, double phi) {
-          return albedo.loss(sphericalDirection(safeSqrt(1.0 - cosTheta * cosTheta), cosTheta, phi)) * cosTheta;
-        },
-        0.0, 1.0, -Pi, Pi, options) / Pi;
+    const double integral =
+        adaptiveSimpson2D(
+            [&](double cosTheta, double phi) {
+              return albedo.loss(sphericalDirection(safeSqrt(1.0 - cosTheta * cosTheta), cosTheta, phi)) *
+                     cosTheta;
+            },
+            0.0, 1.0, -Pi, Pi, options) /
+        Pi;
     EXPECT_NEAR(albedo.averageLoss() / integral, 1.0, 1e-6) << name(type) << " " << ax << " x " << ay;
   }
 }
@@ -160,7 +170,8 @@ TEST(WhiteMicrofacetAlbedoTable, LossOfGgxAtAlpha0p09AveragedOverTheHemisphere) 
   outer.relativeTolerance = 1e-5;
   outer.absoluteTolerance = 1e-8;
   outer.minDepth = 3;
-  const double cosineWeighted = 2.0 * adaptiveSimpson([&](double mu) { return loss(mu) * mu; }, 0.0, 1.0, outer);
+  const double cosineWeighted =
+      2.0 * adaptiveSimpson([&](double mu) { return loss(mu) * mu; }, 0.0, 1.0, outer);
   const double uniform = adaptiveSimpson(loss, 0.0, 1.0, outer);
   std::printf("GGX alpha 0.09, F = 1: loss cosine-weighted (1 - E_avg) %.4f%%, uniform %.4f%%\n",
               100 * cosineWeighted, 100 * uniform);
@@ -172,7 +183,8 @@ TEST(WhiteMicrofacetAlbedoTable, LossOfGgxAtAlpha0p09AveragedOverTheHemisphere) 
 
 TEST(WhiteMicrofacetAlbedoTable, LookupsAreInRangeAndRejectRoughnessBeyondTheTable) {
   CounterRng rng(3, 0);
-  for (const auto& [ax, ay] : std::vector<std::pair<double, double>>{{0.001, 0.001}, {1.0, 1.0}, {0.001, 1.0}}) {
+  for (const auto& [ax, ay] :
+       std::vector<std::pair<double, double>>{{0.001, 0.001}, {1.0, 1.0}, {0.001, 1.0}}) {
     const WhiteMicrofacetAlbedo albedo(MicrofacetType::Beckmann, ax, ay);
     for (int n = 0; n < 2000; ++n) {
       const Vec3d w = sampleUniformHemisphere(rng.uniform2D());

@@ -60,8 +60,8 @@ TEST(AnnulusProfile, NoiseFloorOfOneAnnulus) {
   // One annulus holding p = 0.2 of n paths: E|error| = sqrt(2 / pi) sqrt(p (1 - p) / n), relative to p.
   const std::vector<double> edges{0.0, 1.0};
   const double n = 1e4, p = 0.2;
-  EXPECT_NEAR(radialNoiseFloor(edges, std::vector<double>{p / Pi}, n), std::sqrt(2.0 / Pi) * std::sqrt(p * (1 - p) / n) / p,
-              1e-15);
+  EXPECT_NEAR(radialNoiseFloor(edges, std::vector<double>{p / Pi}, n),
+              std::sqrt(2.0 / Pi) * std::sqrt(p * (1 - p) / n) / p, 1e-15);
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ TEST(PhotonBeamDiffusion, KernelsMatchAdaptiveQuadrature) {
   for (const double r : {1e-3, 0.05, 1.0, 10.0}) {
     SCOPED_TRACE(r);
     // Gauss-Legendre panels of 1.5 in ln(depth): ~1e-6 relative at worst (measured 9e-7).
-    EXPECT_NEAR(beamDiffusionMultiple(0.9, 0.0, fresnelBoundary(1.3), r) / referenceMultiple(0.9, 1.3, r), 1.0, 3e-6);
+    EXPECT_NEAR(beamDiffusionMultiple(0.9, 0.0, fresnelBoundary(1.3), r) / referenceMultiple(0.9, 1.3, r),
+                1.0, 3e-6);
     EXPECT_NEAR(beamDiffusionSingle(0.9, 0.0, 1.3, r) / referenceSingle(0.9, 1.3, r), 1.0, 3e-6);
   }
 }
@@ -58,7 +59,9 @@ TEST(PhotonBeamDiffusion, SingleScatteringLimitAtTheBeam) {
   // r SS(r) -> its limit as the exit point approaches the beam (the e^(-r) factors ~1 - r).
   for (const double eta : {1.0, 1.3, 1.5}) {
     const double r = 1e-9;
-    EXPECT_NEAR(r * beamDiffusionSingle(0.8, 0.3, eta, r) / beamDiffusionSingleLimit(0.8, 0.3, eta), 1.0, 1e-6) << eta;
+    EXPECT_NEAR(r * beamDiffusionSingle(0.8, 0.3, eta, r) / beamDiffusionSingleLimit(0.8, 0.3, eta), 1.0,
+                1e-6)
+        << eta;
   }
 }
 
@@ -82,9 +85,10 @@ TEST(BeamDiffusionTable, NodesHoldTheKernelsAndTheirIntegral) {
     const double rho = t.albedos()[size_t(i)];
     for (const int j : {1, 20, 40}) {
       const double r = t.radii()[size_t(j)];
-      EXPECT_NEAR(t.density(i, j),
-                  2 * Pi * r * (beamDiffusionMultiple(rho, 0.0, b, r) + beamDiffusionSingle(rho, 0.0, 1.3, r)),
-                  1e-13 * t.density(i, j));
+      EXPECT_NEAR(
+          t.density(i, j),
+          2 * Pi * r * (beamDiffusionMultiple(rho, 0.0, b, r) + beamDiffusionSingle(rho, 0.0, 1.3, r)),
+          1e-13 * t.density(i, j));
     }
     // The row's cumulative at r_40 against adaptive quadrature of the reference kernels.
     const double r40 = t.radii()[40];

@@ -29,8 +29,8 @@ TEST(BurleyProfile, RadiusPdfIsTwoPiRTimesTheProfileOverA) {
   for (const double r : {1e-4, 0.1, 1.0, 3.0}) {
     EXPECT_NEAR(burleyRadiusPdf(d, r), 2 * Pi * r * burleyProfile(A, d, r) / A, 1e-14) << r;
     const double h = 1e-6;
-    EXPECT_NEAR((burleyCumulative(1.0, d, r + h) - burleyCumulative(1.0, d, r - h)) / (2 * h), burleyRadiusPdf(d, r),
-                1e-8)
+    EXPECT_NEAR((burleyCumulative(1.0, d, r + h) - burleyCumulative(1.0, d, r - h)) / (2 * h),
+                burleyRadiusPdf(d, r), 1e-8)
         << r;
   }
 }

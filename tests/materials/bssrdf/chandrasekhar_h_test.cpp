@@ -26,7 +26,8 @@ TEST(ChandrasekharH, SatisfiesTheAlternativeForm) {
     for (const double mu : {0.05, 0.37, 1.0}) {
       double integral = 0.0;
       for (int j = 0; j < ChandrasekharH::NodeCount; ++j)
-        integral += H.weights()[size_t(j)] * H.nodes()[size_t(j)] * H.values()[size_t(j)] / (mu + H.nodes()[size_t(j)]);
+        integral += H.weights()[size_t(j)] * H.nodes()[size_t(j)] * H.values()[size_t(j)] /
+                    (mu + H.nodes()[size_t(j)]);
       EXPECT_NEAR(1.0 / H(mu), std::sqrt(1.0 - c) + 0.5 * c * integral, 1e-9) << c << " " << mu;
     }
   }

@@ -31,14 +31,17 @@ TEST(JensenDipole, EganHilgemanFitAndExactFdrAgreeOnTheTable) {
     const double exactA = jensenBoundaryFactor(eta), fitA = (1 + fit) / (1 - fit);
     EXPECT_NEAR((exactA - 1) / (exactA + 1), fit, 4e-4) << eta;
     for (const double alphaPrime : {0.6, 0.9, 0.99, 0.999})
-      EXPECT_NEAR(jensenDipoleTotal(alphaPrime, exactA), jensenDipoleTotal(alphaPrime, fitA), 5e-4) << alphaPrime;
+      EXPECT_NEAR(jensenDipoleTotal(alphaPrime, exactA), jensenDipoleTotal(alphaPrime, fitA), 5e-4)
+          << alphaPrime;
   }
 }
 
 TEST(JensenDipole, ClosedFormIsTheLimitOfTheCumulativeAndOneWithoutAbsorption) {
   const JensenDipole<double> d = makeJensenDipole(1.0, 0.01, jensenBoundaryFactor(1.3));
-  EXPECT_NEAR(jensenDipoleCumulative(d, 1e6), jensenDipoleTotal(d.alphaPrime, jensenBoundaryFactor(1.3)), 1e-13);
-  for (const double eta : {1.0, 1.3, 1.5}) EXPECT_DOUBLE_EQ(jensenDipoleTotal(1.0, jensenBoundaryFactor(eta)), 1.0);
+  EXPECT_NEAR(jensenDipoleCumulative(d, 1e6), jensenDipoleTotal(d.alphaPrime, jensenBoundaryFactor(1.3)),
+              1e-13);
+  for (const double eta : {1.0, 1.3, 1.5})
+    EXPECT_DOUBLE_EQ(jensenDipoleTotal(1.0, jensenBoundaryFactor(eta)), 1.0);
   EXPECT_DOUBLE_EQ(jensenDipoleTotal(0.0, jensenBoundaryFactor(1.3)), 0.0);
 }
 

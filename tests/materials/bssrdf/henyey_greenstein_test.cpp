@@ -12,14 +12,18 @@ TEST(HenyeyGreenstein, NormalisedWithMeanCosineG) {
     QuadratureOptions q;
     q.relativeTolerance = 1e-12;
     q.minDepth = 8;
-    EXPECT_NEAR(2 * Pi * adaptiveSimpson([g](double mu) { return henyeyGreenstein(mu, g); }, -1.0, 1.0, q), 1.0, 1e-9);
-    EXPECT_NEAR(2 * Pi * adaptiveSimpson([g](double mu) { return mu * henyeyGreenstein(mu, g); }, -1.0, 1.0, q), g, 1e-9);
+    EXPECT_NEAR(2 * Pi * adaptiveSimpson([g](double mu) { return henyeyGreenstein(mu, g); }, -1.0, 1.0, q),
+                1.0, 1e-9);
+    EXPECT_NEAR(
+        2 * Pi * adaptiveSimpson([g](double mu) { return mu * henyeyGreenstein(mu, g); }, -1.0, 1.0, q), g,
+        1e-9);
   }
 }
 
 TEST(HenyeyGreenstein, CosineSamplerAndCdfRoundTrip) {
   for (const double g : {-0.9, -0.2, 0.0, 1e-9, 0.6, 0.97})
-    for (double u = 0.0; u <= 1.0; u += 0.01) EXPECT_NEAR(henyeyGreensteinCdf(g, sampleHenyeyGreensteinCos(g, u)), u, 1e-12);
+    for (double u = 0.0; u <= 1.0; u += 0.01)
+      EXPECT_NEAR(henyeyGreensteinCdf(g, sampleHenyeyGreensteinCos(g, u)), u, 1e-12);
 }
 
 // Directions scattered from a tilted propagation direction, through the spherical chi-square
@@ -35,10 +39,10 @@ TEST(HenyeyGreenstein, SampledDirectionsPassTheChiSquareKit) {
       const Vec3d d = sampleHenyeyGreenstein(w, g, rng.uniform2D());
       return DirectionSample{d, henyeyGreenstein(glm::dot(w, d), g)};
     };
-    const ChiSquareResult r =
-        sphericalChiSquareTest(draw, [&](const Vec3d& d) { return henyeyGreenstein(glm::dot(w, d), g); }, o);
-    EXPECT_TRUE(r.passed) << "g " << g << " chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
-                          << r.failure;
+    const ChiSquareResult r = sphericalChiSquareTest(
+        draw, [&](const Vec3d& d) { return henyeyGreenstein(glm::dot(w, d), g); }, o);
+    EXPECT_TRUE(r.passed) << "g " << g << " chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue
+                          << " " << r.failure;
   }
 }
 

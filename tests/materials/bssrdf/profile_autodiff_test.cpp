@@ -23,8 +23,8 @@ using Jet = ceres::Jet<double, N>;
 
 // f evaluated with Jets at x (each parameter seeded with its own derivative) against central
 // differences with step h x_i: truncation ~h^2, round-off ~1e-16 / h.
-void expectGradient(const std::function<Jet(const Jet&, const Jet&)>& f, double x0, double x1, double h = 1e-5,
-                    double tolerance = 1e-6) {
+void expectGradient(const std::function<Jet(const Jet&, const Jet&)>& f, double x0, double x1,
+                    double h = 1e-5, double tolerance = 1e-6) {
   const Jet value = f(Jet(x0, 0), Jet(x1, 1));
   ASSERT_TRUE(std::isfinite(value.a));
   const double x[2] = {x0, x1};
@@ -42,23 +42,29 @@ void expectGradient(const std::function<Jet(const Jet&, const Jet&)>& f, double 
 TEST(ProfileAutodiff, JensenDipole) {
   const double A = jensenBoundaryFactor(1.3);
   for (const double r : {0.0, 0.3, 2.0}) {
-    expectGradient([&](const Jet& s, const Jet& a) { return jensenDipoleProfile(makeJensenDipole(s, a, A), Jet(r)); },
-                   1.2, 0.05);
-    expectGradient([&](const Jet& s, const Jet& a) { return jensenDipoleCumulative(makeJensenDipole(s, a, A), Jet(r)); },
-                   1.2, 0.05);
+    expectGradient(
+        [&](const Jet& s, const Jet& a) { return jensenDipoleProfile(makeJensenDipole(s, a, A), Jet(r)); },
+        1.2, 0.05);
+    expectGradient(
+        [&](const Jet& s, const Jet& a) { return jensenDipoleCumulative(makeJensenDipole(s, a, A), Jet(r)); },
+        1.2, 0.05);
   }
-  expectGradient([&](const Jet& alphaPrime, const Jet&) { return jensenDipoleTotal(alphaPrime, A); }, 0.8, 0.0);
+  expectGradient([&](const Jet& alphaPrime, const Jet&) { return jensenDipoleTotal(alphaPrime, A); }, 0.8,
+                 0.0);
 }
 
 TEST(ProfileAutodiff, BetterDipole) {
   const FresnelBoundary b = fresnelBoundary(1.4);
   for (const double r : {0.0, 0.3, 2.0}) {
-    expectGradient([&](const Jet& s, const Jet& a) { return betterDipoleProfile(makeBetterDipole(s, a, b), Jet(r)); },
-                   0.9, 0.02);
-    expectGradient([&](const Jet& s, const Jet& a) { return betterDipoleCumulative(makeBetterDipole(s, a, b), Jet(r)); },
-                   0.9, 0.02);
+    expectGradient(
+        [&](const Jet& s, const Jet& a) { return betterDipoleProfile(makeBetterDipole(s, a, b), Jet(r)); },
+        0.9, 0.02);
+    expectGradient(
+        [&](const Jet& s, const Jet& a) { return betterDipoleCumulative(makeBetterDipole(s, a, b), Jet(r)); },
+        0.9, 0.02);
   }
-  expectGradient([&](const Jet& s, const Jet& a) { return betterDipoleTotal(makeBetterDipole(s, a, b)); }, 0.9, 0.02);
+  expectGradient([&](const Jet& s, const Jet& a) { return betterDipoleTotal(makeBetterDipole(s, a, b)); },
+                 0.9, 0.02);
 }
 
 TEST(ProfileAutodiff, GuardsKeepDerivativesFiniteWithoutAbsorption) {
@@ -70,26 +76,31 @@ TEST(ProfileAutodiff, GuardsKeepDerivativesFiniteWithoutAbsorption) {
   const Jet dipole = jensenDipoleTotal(Jet(1.0, 0), jensenBoundaryFactor(1.3));
   EXPECT_TRUE(std::isfinite(dipole.v[0]));
   const Jet burleyAtZero = burleyProfile(Jet(0.5, 0), Jet(1.0, 1), Jet(0.0));
-  EXPECT_TRUE(std::isfinite(burleyAtZero.a) && std::isfinite(burleyAtZero.v[0]) && std::isfinite(burleyAtZero.v[1]));
+  EXPECT_TRUE(std::isfinite(burleyAtZero.a) && std::isfinite(burleyAtZero.v[0]) &&
+              std::isfinite(burleyAtZero.v[1]));
 }
 
 TEST(ProfileAutodiff, BurleyWithItsShapeFactor) {
   // The fitter's problem: A and the length l, with d = l / s(A) for each fit.
-  for (const BurleyFit fit : {BurleyFit::Searchlight, BurleyFit::DiffuseTransmission, BurleyFit::SearchlightDiffuseMfp})
+  for (const BurleyFit fit :
+       {BurleyFit::Searchlight, BurleyFit::DiffuseTransmission, BurleyFit::SearchlightDiffuseMfp})
     for (const double r : {0.01, 0.5, 3.0})
       expectGradient(
-          [&](const Jet& A, const Jet& l) { return burleyProfile(A, l / burleyShapeFactor(fit, A), Jet(r)); }, 0.6,
-          1.3);
+          [&](const Jet& A, const Jet& l) { return burleyProfile(A, l / burleyShapeFactor(fit, A), Jet(r)); },
+          0.6, 1.3);
   expectGradient([](const Jet& A, const Jet& d) { return burleyCumulative(A, d, Jet(0.7)); }, 0.6, 1.3);
 }
 
 TEST(ProfileAutodiff, PhotonBeamDiffusionKernels) {
   const FresnelBoundary b = fresnelBoundary(1.3);
   for (const double r : {0.01, 1.0}) {
-    expectGradient([&](const Jet& rho, const Jet& g) { return beamDiffusionMultiple(rho, g, b, r); }, 0.9, 0.3);
-    expectGradient([&](const Jet& rho, const Jet& g) { return beamDiffusionSingle(rho, g, 1.3, r); }, 0.9, 0.3);
+    expectGradient([&](const Jet& rho, const Jet& g) { return beamDiffusionMultiple(rho, g, b, r); }, 0.9,
+                   0.3);
+    expectGradient([&](const Jet& rho, const Jet& g) { return beamDiffusionSingle(rho, g, 1.3, r); }, 0.9,
+                   0.3);
   }
-  expectGradient([](const Jet& rho, const Jet& g) { return beamDiffusionSingleLimit(rho, g, 1.3); }, 0.9, 0.3);
+  expectGradient([](const Jet& rho, const Jet& g) { return beamDiffusionSingleLimit(rho, g, 1.3); }, 0.9,
+                 0.3);
 }
 
 TEST(ProfileAutodiff, PhaseFunctionAndDirectionalTerm) {

@@ -18,12 +18,15 @@ struct ProfileCase {
   double g = 0.0;
 };
 
-void PrintTo(const ProfileCase& c, std::ostream* os) { *os << toString(c.model) << " " << c.medium << " g=" << c.g; }
+void PrintTo(const ProfileCase& c, std::ostream* os) {
+  *os << toString(c.model) << " " << c.medium << " g=" << c.g;
+}
 
 class ProfileEnergy : public testing::TestWithParam<ProfileCase> {
  protected:
   std::shared_ptr<const RadialProfile> profile() const {
-    return makeProfile(GetParam().model, measuredMedium(GetParam().medium, GetParam().g), BurleyFit::Searchlight);
+    return makeProfile(GetParam().model, measuredMedium(GetParam().medium, GetParam().g),
+                       BurleyFit::Searchlight);
   }
 };
 
@@ -55,7 +58,8 @@ TEST_P(ProfileEnergy, RadiusCdfPdfAndInverseAreOneDistribution) {
       const double h = 1e-5 * r;
       const double derivative = (p->radiusCdf(c, r + h) - p->radiusCdf(c, r - h)) / (2 * h);
       EXPECT_NEAR(derivative, p->radiusPdf(c, r), 1e-6 * p->radiusPdf(c, r) + 1e-15 / h) << u;
-      EXPECT_NEAR(p->radiusPdf(c, r), 2.0 * Pi * r * p->eval(r)[c] / total[c], 1e-12 * p->radiusPdf(c, r)) << u;
+      EXPECT_NEAR(p->radiusPdf(c, r), 2.0 * Pi * r * p->eval(r)[c] / total[c], 1e-12 * p->radiusPdf(c, r))
+          << u;
     }
   }
 }
@@ -69,7 +73,8 @@ std::vector<ProfileCase> cases(std::vector<std::string> media, double g = 0.0) {
 }
 
 std::string caseName(const testing::TestParamInfo<ProfileCase>& info) {
-  std::string name = toString(info.param.model) + "_" + info.param.medium + (info.param.g != 0 ? "_anisotropic" : "");
+  std::string name =
+      toString(info.param.model) + "_" + info.param.medium + (info.param.g != 0 ? "_anisotropic" : "");
   for (char& ch : name)
     if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
   return name;

@@ -18,8 +18,8 @@ TEST(SeparableBssrdf, DirectionalTermIntegratesToOne) {
     q.absoluteTolerance = 1e-15;
     q.minDepth = 6;
     const double integral = adaptiveSimpson2D(
-        [&](double cosTheta, double) { return separableDirectional(cosTheta, eta, c) * cosTheta; }, 0.0, 1.0, -Pi, Pi,
-        q);
+        [&](double cosTheta, double) { return separableDirectional(cosTheta, eta, c) * cosTheta; }, 0.0, 1.0,
+        -Pi, Pi, q);
     EXPECT_NEAR(integral, 1.0, 1e-9) << eta;
   }
 }
@@ -38,8 +38,8 @@ TEST(SeparableBssrdf, IsFresnelTransmittanceTimesProfileTimesFresnelTransmittanc
   const auto profile = std::make_shared<BurleyProfile>(Rgb(0.4, 0.5, 0.6), Rgb(1.0, 2.0, 3.0));
   const SeparableBssrdf s(profile, 1.4);
   const double cosI = 0.7, cosO = 0.3, r = 0.8;
-  const Rgb expected = (1 - fresnelDielectric(cosI, 1.4)) * (1 - fresnelDielectric(cosO, 1.4)) * profile->eval(r) /
-                       (Pi * s.normalization());
+  const Rgb expected = (1 - fresnelDielectric(cosI, 1.4)) * (1 - fresnelDielectric(cosO, 1.4)) *
+                       profile->eval(r) / (Pi * s.normalization());
   const Rgb got = s.eval(r, cosI, cosO);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], expected[c], 1e-15 * expected[c]);
   EXPECT_EQ(s.eval(r, -0.5, cosO), Rgb(0.0));

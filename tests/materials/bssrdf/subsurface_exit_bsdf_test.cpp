@@ -20,8 +20,8 @@ TEST(SubsurfaceExitBsdf, PassesTheKitAndIsLossless) {
     o.reciprocityPairs = 0;
     const CheckReport report = runBsdfChecks(model, "exit eta " + std::to_string(eta), o);
     for (const CheckRow& row : report.rows)
-      EXPECT_TRUE(row.passed) << "eta " << eta << ": " << row.test << " at " << row.wiThetaDeg.value_or(-1) << ": "
-                              << row.note;
+      EXPECT_TRUE(row.passed) << "eta " << eta << ": " << row.test << " at " << row.wiThetaDeg.value_or(-1)
+                              << ": " << row.note;
   }
 }
 

@@ -67,7 +67,8 @@ TEST_P(SubsurfaceKit, EveryRowPasses) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Profiles, SubsurfaceKit, testing::ValuesIn(cases({"Skin1"})), caseName);
-INSTANTIATE_TEST_SUITE_P(Grid, SubsurfaceKit, testing::ValuesIn(cases({"Marble", "Ketchup", "Spectralon"})), caseName);
+INSTANTIATE_TEST_SUITE_P(Grid, SubsurfaceKit, testing::ValuesIn(cases({"Marble", "Ketchup", "Spectralon"})),
+                         caseName);
 
 class SubsurfaceKitControls : public SubsurfaceKit {};
 
@@ -75,10 +76,12 @@ class SubsurfaceKitControls : public SubsurfaceKit {};
 // probe channel weights 30% off, and the radial shortcut instead of the multi-axis pdf.
 TEST_P(SubsurfaceKitControls, KitRejectsEveryBrokenSampler) {
   const SubsurfaceMaterial m = material();
-  const CheckReport report = runSubsurfaceNegativeControls(*m.profile, caseName({GetParam(), 0}), kitOptions());
+  const CheckReport report =
+      runSubsurfaceNegativeControls(*m.profile, caseName({GetParam(), 0}), kitOptions());
   EXPECT_EQ(report.rows.size(), 5u);
   EXPECT_TRUE(report.passed()) << formatTable(report);
-  for (const CheckRow& row : report.rows) EXPECT_EQ(row.note.rfind("rejected", 0), 0u) << row.test << ": " << row.note;
+  for (const CheckRow& row : report.rows)
+    EXPECT_EQ(row.note.rfind("rejected", 0), 0u) << row.test << ": " << row.note;
 }
 
 INSTANTIATE_TEST_SUITE_P(Controls, SubsurfaceKitControls, testing::ValuesIn(cases({"Skin1"})), caseName);

@@ -26,9 +26,14 @@ TEST(SubsurfaceRegistry, DefaultIsBurleyOnSkin1WithJensensReflectance) {
   EXPECT_NEAR(total.y, 0.227, 5e-4);
   EXPECT_NEAR(total.z, 0.131, 5e-4);
   EXPECT_DOUBLE_EQ(m.medium.eta, 1.3);
-  EXPECT_EQ(completeMaterial(json{{"type", "subsurface"}}),
-            (json{{"type", "subsurface"}, {"profile", "burley"}, {"medium", "Skin1"}, {"eta", 1.3}, {"g", 0.0},
-                  {"scale", 1.0}, {"boundary", "smooth"}, {"burley_fit", "searchlight"}}));
+  EXPECT_EQ(completeMaterial(json{{"type", "subsurface"}}), (json{{"type", "subsurface"},
+                                                                  {"profile", "burley"},
+                                                                  {"medium", "Skin1"},
+                                                                  {"eta", 1.3},
+                                                                  {"g", 0.0},
+                                                                  {"scale", 1.0},
+                                                                  {"boundary", "smooth"},
+                                                                  {"burley_fit", "searchlight"}}));
 }
 
 TEST(SubsurfaceRegistry, MediumSetsTheDefaultIndex) {
@@ -41,12 +46,16 @@ TEST(SubsurfaceRegistry, MediumSetsTheDefaultIndex) {
 TEST(SubsurfaceRegistry, EveryProfileBuildsFromEveryParameterisation) {
   for (const char* profile : {"dipole", "better-dipole", "beam-diffusion", "burley"}) {
     SCOPED_TRACE(profile);
-    const json coefficients{{"type", "subsurface"}, {"profile", profile}, {"sigma_s", {1.0, 2.0, 3.0}}, {"sigma_a", 0.05}};
+    const json coefficients{
+        {"type", "subsurface"}, {"profile", profile}, {"sigma_s", {1.0, 2.0, 3.0}}, {"sigma_a", 0.05}};
     const SubsurfaceMaterial m = makeSubsurface(coefficients);
     EXPECT_EQ(m.profile->name(), profile);
     EXPECT_EQ(m.medium.sigmaS, Rgb(1.0, 2.0, 3.0));
     // Diffuse colour and mean free path: the built profile reflects the colour (bisection 1e-12).
-    const json colour{{"type", "subsurface"}, {"profile", profile}, {"reflectance", {0.7, 0.4, 0.1}}, {"mfp", {1.0, 0.5, 0.25}}};
+    const json colour{{"type", "subsurface"},
+                      {"profile", profile},
+                      {"reflectance", {0.7, 0.4, 0.1}},
+                      {"mfp", {1.0, 0.5, 0.25}}};
     const SubsurfaceMaterial c = makeSubsurface(colour);
     const Rgb total = c.profile->totalReflectance();
     EXPECT_NEAR(total.x, 0.7, 1e-9);
@@ -79,7 +88,8 @@ TEST(SubsurfaceRegistry, ScaleMultipliesCoefficientsAndShrinksTheProfile) {
 TEST(SubsurfaceRegistry, RoughBoundaryGetsItsDefaultRoughness) {
   const json rough{{"type", "subsurface"}, {"boundary", "rough"}};
   EXPECT_EQ(completeMaterial(rough)["roughness"], 0.1);
-  const SubsurfaceMaterial m = makeSubsurface(json{{"type", "subsurface"}, {"boundary", "rough"}, {"roughness", 0.3}});
+  const SubsurfaceMaterial m =
+      makeSubsurface(json{{"type", "subsurface"}, {"boundary", "rough"}, {"roughness", 0.3}});
   EXPECT_EQ(m.boundary, SubsurfaceBoundary::Rough);
   EXPECT_DOUBLE_EQ(m.roughness, 0.3);
 }
@@ -97,46 +107,63 @@ TEST_P(BadSubsurfaceTest, IsRejectedNamingKeyValueAndAllowed) {
   const std::string message = errorOf(GetParam().material);
   ASSERT_FALSE(message.empty()) << GetParam().material.dump();
   for (const std::string& fragment : GetParam().messageContains)
-    EXPECT_NE(message.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << message;
+    EXPECT_NE(message.find(fragment), std::string::npos)
+        << "\"" << fragment << "\" missing from: " << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     SubsurfaceRegistry, BadSubsurfaceTest,
     testing::Values(
-        BadSubsurface{"negative scattering", {{"type", "subsurface"}, {"sigma_s", -1.0}, {"sigma_a", 0.1}},
+        BadSubsurface{"negative scattering",
+                      {{"type", "subsurface"}, {"sigma_s", -1.0}, {"sigma_a", 0.1}},
                       {"\"sigma_s\"", "-1", "out of range", ">= 0"}},
-        BadSubsurface{"negative absorption channel", {{"type", "subsurface"}, {"sigma_s", 1.0}, {"sigma_a", {0.1, -0.2, 0.1}}},
+        BadSubsurface{"negative absorption channel",
+                      {{"type", "subsurface"}, {"sigma_s", 1.0}, {"sigma_a", {0.1, -0.2, 0.1}}},
                       {"\"sigma_a\"", "g = -0.2", ">= 0"}},
-        BadSubsurface{"no extinction", {{"type", "subsurface"}, {"sigma_s", {1.0, 0.0, 1.0}}, {"sigma_a", 0.0}},
+        BadSubsurface{"no extinction",
+                      {{"type", "subsurface"}, {"sigma_s", {1.0, 0.0, 1.0}}, {"sigma_a", 0.0}},
                       {"\"sigma_a\"", "sigma_s + sigma_a > 0"}},
-        BadSubsurface{"reflectance above 1", {{"type", "subsurface"}, {"reflectance", 1.2}, {"mfp", 1.0}},
+        BadSubsurface{"reflectance above 1",
+                      {{"type", "subsurface"}, {"reflectance", 1.2}, {"mfp", 1.0}},
                       {"\"reflectance\"", "1.2", "[0, 1]"}},
-        BadSubsurface{"reflectance below 0", {{"type", "subsurface"}, {"reflectance", {0.5, -0.1, 0.5}}, {"mfp", 1.0}},
+        BadSubsurface{"reflectance below 0",
+                      {{"type", "subsurface"}, {"reflectance", {0.5, -0.1, 0.5}}, {"mfp", 1.0}},
                       {"\"reflectance\"", "[0, 1]"}},
-        BadSubsurface{"zero mean free path", {{"type", "subsurface"}, {"reflectance", 0.5}, {"mfp", 0.0}},
+        BadSubsurface{"zero mean free path",
+                      {{"type", "subsurface"}, {"reflectance", 0.5}, {"mfp", 0.0}},
                       {"\"mfp\"", "0", "> 0"}},
-        BadSubsurface{"reflectance without mfp", {{"type", "subsurface"}, {"reflectance", 0.5}},
+        BadSubsurface{"reflectance without mfp",
+                      {{"type", "subsurface"}, {"reflectance", 0.5}},
                       {"\"reflectance\"", "needs \"mfp\""}},
-        BadSubsurface{"two parameterisations", {{"type", "subsurface"}, {"medium", "Skin1"}, {"sigma_s", 1.0}, {"sigma_a", 1.0}},
+        BadSubsurface{"two parameterisations",
+                      {{"type", "subsurface"}, {"medium", "Skin1"}, {"sigma_s", 1.0}, {"sigma_a", 1.0}},
                       {"cannot be combined", "\"medium\""}},
         BadSubsurface{"zero eta", {{"type", "subsurface"}, {"eta", 0.0}}, {"\"eta\"", "0", "(0, 4]"}},
         BadSubsurface{"negative eta", {{"type", "subsurface"}, {"eta", -1.3}}, {"\"eta\"", "-1.3", "(0, 4]"}},
-        BadSubsurface{"unknown medium", {{"type", "subsurface"}, {"medium", "Skin3"}},
+        BadSubsurface{"unknown medium",
+                      {{"type", "subsurface"}, {"medium", "Skin3"}},
                       {"\"medium\"", "\"Skin3\"", "\"Skin1\"", "\"Marble\"", "\"Wholemilk\""}},
-        BadSubsurface{"unknown profile", {{"type", "subsurface"}, {"profile", "quantized"}},
+        BadSubsurface{"unknown profile",
+                      {{"type", "subsurface"}, {"profile", "quantized"}},
                       {"\"profile\"", "\"quantized\"", "\"burley\"", "\"beam-diffusion\""}},
         BadSubsurface{"g of 1", {{"type", "subsurface"}, {"g", 1.0}}, {"\"g\"", "(-1, 1)"}},
         BadSubsurface{"zero scale", {{"type", "subsurface"}, {"scale", 0.0}}, {"\"scale\"", "> 0"}},
-        BadSubsurface{"roughness on a smooth boundary", {{"type", "subsurface"}, {"roughness", 0.2}},
+        BadSubsurface{"roughness on a smooth boundary",
+                      {{"type", "subsurface"}, {"roughness", 0.2}},
                       {"\"roughness\"", "0.2", "rough boundary only", "\"boundary\": \"rough\""}},
-        BadSubsurface{"burley fit on a dipole", {{"type", "subsurface"}, {"profile", "dipole"}, {"burley_fit", "diffuse"}},
+        BadSubsurface{"burley fit on a dipole",
+                      {{"type", "subsurface"}, {"profile", "dipole"}, {"burley_fit", "diffuse"}},
                       {"\"burley_fit\"", "burley profile only"}},
         BadSubsurface{"dmfp fit without absorption",
                       {{"type", "subsurface"}, {"medium", "Spectralon"}, {"burley_fit", "searchlight-dmfp"}},
                       {"\"burley_fit\"", "absorption"}},
-        BadSubsurface{"unknown key", {{"type", "subsurface"}, {"albedo", 0.5}}, {"\"albedo\"", "\"reflectance\"", "\"mfp\""}},
-        BadSubsurface{"a BSDF", {{"type", "lambertian"}}, {"\"type\"", "\"lambertian\"", "not a subsurface material"}}));
+        BadSubsurface{"unknown key",
+                      {{"type", "subsurface"}, {"albedo", 0.5}},
+                      {"\"albedo\"", "\"reflectance\"", "\"mfp\""}},
+        BadSubsurface{"a BSDF",
+                      {{"type", "lambertian"}},
+                      {"\"type\"", "\"lambertian\"", "not a subsurface material"}}));
 
 TEST(SubsurfaceRegistry, MakeBsdfRefusesASubsurfaceMaterial) {
   try {

@@ -14,7 +14,8 @@ const double Threshold = sidakSignificance(0.01, 2);
 
 std::vector<double> skewedWeights() {
   std::vector<double> w(37);
-  for (size_t i = 0; i < w.size(); ++i) w[i] = (i % 5 == 0) ? 0.0 : std::pow(1.3, double(i % 11)) + 1e-3 * double(i);
+  for (size_t i = 0; i < w.size(); ++i)
+    w[i] = (i % 5 == 0) ? 0.0 : std::pow(1.3, double(i % 11)) + 1e-3 * double(i);
   w[7] = 500.0;  // one dominant cell
   return w;
 }
@@ -27,7 +28,8 @@ Table2D histogram(const AliasTable& table, size_t n, size_t leftoverBins, Table2
     EXPECT_GE(s.remapped, 0.0);
     EXPECT_LT(s.remapped, 1.0);
     counts(0, int(s.cell)) += 1;
-    if (leftovers && s.cell == 7) (*leftovers)(0, std::min(int(s.remapped * leftoverBins), int(leftoverBins) - 1)) += 1;
+    if (leftovers && s.cell == 7)
+      (*leftovers)(0, std::min(int(s.remapped * leftoverBins), int(leftoverBins) - 1)) += 1;
   }
   return counts;
 }

@@ -44,7 +44,8 @@ TEST(CatmullRomWeights, ExactForLinearFunctions) {
   const std::vector<double> x = nodes();
   std::vector<double> f;
   for (double xi : x) f.push_back(2.0 - 3.0 * xi);
-  for (double at = 0.0; at <= 1.0; at += 0.0171) EXPECT_NEAR(interpolate(x, f, at), 2.0 - 3.0 * at, 1e-14) << at;
+  for (double at = 0.0; at <= 1.0; at += 0.0171)
+    EXPECT_NEAR(interpolate(x, f, at), 2.0 - 3.0 * at, 1e-14) << at;
 }
 
 TEST(CatmullRomWeights, ConvergeOnASmoothFunction) {

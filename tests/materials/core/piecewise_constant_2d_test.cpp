@@ -43,7 +43,8 @@ TEST(PiecewiseConstant2D, SamplesCellsWithTheirProbabilities) {
   for (size_t r = 0; r < rows; ++r)
     for (size_t c = 0; c < columns; ++c) expected(int(r), int(c)) = n * d.probability(r, c);
   const auto result = chiSquareFromTables(observed, expected, n, 0.01);
-  EXPECT_TRUE(result.passed) << "chi2 " << result.statistic << " dof " << result.dof << " p " << result.pValue;
+  EXPECT_TRUE(result.passed) << "chi2 " << result.statistic << " dof " << result.dof << " p "
+                             << result.pValue;
 }
 
 TEST(PiecewiseConstant2D, RejectsBadShapes) {

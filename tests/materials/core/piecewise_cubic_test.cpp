@@ -47,7 +47,8 @@ TEST(PiecewiseCubic1D, ConvergesAsTheCubeOfTheSpacing) {
     }
     const PiecewiseCubic1D f(x, y);
     double worst = 0.0;
-    for (double t = 0.0; t <= 2.0; t += 1e-3) worst = std::max(worst, std::abs(f(t) - std::exp(-t) * std::cos(2.0 * t)));
+    for (double t = 0.0; t <= 2.0; t += 1e-3)
+      worst = std::max(worst, std::abs(f(t) - std::exp(-t) * std::cos(2.0 * t)));
     return worst;
   };
   const double coarse = error(40), fine = error(80);

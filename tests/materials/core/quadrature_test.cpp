@@ -27,7 +27,8 @@ TEST(AdaptiveSimpson, FindsNarrowPeakAtAnEndpoint) {
 }
 
 TEST(AdaptiveSimpson, VectorValuesIntegrateComponentwise) {
-  const glm::dvec4 got = adaptiveSimpson([](double x) { return glm::dvec4(1.0, x, x * x, std::sin(x)); }, 0.0, Pi);
+  const glm::dvec4 got =
+      adaptiveSimpson([](double x) { return glm::dvec4(1.0, x, x * x, std::sin(x)); }, 0.0, Pi);
   EXPECT_NEAR(got.x, Pi, 1e-12);
   EXPECT_NEAR(got.y, Pi * Pi / 2, 1e-12);
   EXPECT_NEAR(got.z, Pi * Pi * Pi / 3, 1e-10);
@@ -36,7 +37,8 @@ TEST(AdaptiveSimpson, VectorValuesIntegrateComponentwise) {
 
 TEST(AdaptiveSimpson, TwoDimensionalGaussian) {
   // int over [-4,4]^2 of exp(-(x^2 + y^2)) = pi erf(4)^2.
-  const double got = adaptiveSimpson2D([](double x, double y) { return std::exp(-(x * x + y * y)); }, -4, 4, -4, 4);
+  const double got =
+      adaptiveSimpson2D([](double x, double y) { return std::exp(-(x * x + y * y)); }, -4, 4, -4, 4);
   EXPECT_NEAR(got, Pi * sqr(std::erf(4.0)), 1e-6 * Pi);
 }
 

@@ -54,11 +54,14 @@ TEST(SpecialFunctions, JetDerivativesMatchCentralDifferences) {
   for (const double x : {0.2, 1.0, 2.5, 11.0, 300.0}) {
     const Jet value = logGamma(Jet(x, 0));
     EXPECT_NEAR(value.a, std::lgamma(x), 1e-14 * std::max(1.0, std::abs(value.a)));
-    EXPECT_NEAR(value.v[0], (std::lgamma(x + h) - std::lgamma(x - h)) / (2 * h), 1e-7 * std::max(1.0, std::abs(value.v[0])));
+    EXPECT_NEAR(value.v[0], (std::lgamma(x + h) - std::lgamma(x - h)) / (2 * h),
+                1e-7 * std::max(1.0, std::abs(value.v[0])));
   }
   const Jet a(1.7, 0), b(4.2, 1);
   const Jet beta = betaFunction(a, b);
-  const auto betaDouble = [](double x, double y) { return std::exp(std::lgamma(x) + std::lgamma(y) - std::lgamma(x + y)); };
+  const auto betaDouble = [](double x, double y) {
+    return std::exp(std::lgamma(x) + std::lgamma(y) - std::lgamma(x + y));
+  };
   EXPECT_NEAR(beta.v[0], (betaDouble(1.7 + h, 4.2) - betaDouble(1.7 - h, 4.2)) / (2 * h), 1e-8);
   EXPECT_NEAR(beta.v[1], (betaDouble(1.7, 4.2 + h) - betaDouble(1.7, 4.2 - h)) / (2 * h), 1e-8);
 }

@@ -29,7 +29,8 @@ std::string buildErrorOf(const json& material) {
 TEST(MeasuredMaterial, NeedsItsFile) {
   const std::string message = buildErrorOf(json{{"type", "measured"}});
   EXPECT_NE(message.find("material key \"file\" is missing"), std::string::npos) << message;
-  EXPECT_NE(buildErrorOf(json{{"type", "measured"}, {"file", 3}}).find("has the wrong type"), std::string::npos);
+  EXPECT_NE(buildErrorOf(json{{"type", "measured"}, {"file", 3}}).find("has the wrong type"),
+            std::string::npos);
   EXPECT_NE(buildErrorOf(json{{"type", "measured"}, {"file", ""}}).find("is empty"), std::string::npos);
 }
 
@@ -60,7 +61,8 @@ TEST(MeasuredMaterial, RelativeFileResolvesAgainstTheMaterialFile) {
 
 TEST(MeasuredMaterial, IsListedWithAPathParameter) {
   const json catalog = materialCatalogJson();
-  const auto measured = std::find_if(catalog.begin(), catalog.end(), [](const json& m) { return m["type"] == "measured"; });
+  const auto measured =
+      std::find_if(catalog.begin(), catalog.end(), [](const json& m) { return m["type"] == "measured"; });
   ASSERT_NE(measured, catalog.end());
   ASSERT_EQ((*measured)["parameters"].size(), 1u);
   EXPECT_EQ((*measured)["parameters"][0]["name"], "file");

@@ -31,8 +31,10 @@ inline std::filesystem::path scratchPath(const std::string& stem) {
 }
 
 // The registry materials of one published fit line.
-inline std::vector<nlohmann::json> publishedFit(const std::string& name, const std::string& file = "ngan_cooktorrance.fit") {
-  for (const PublishedFit& fit : readPublishedFits(std::filesystem::path(SCATTERLAB_DATA_DIR) / "published-fits" / file))
+inline std::vector<nlohmann::json> publishedFit(const std::string& name,
+                                                const std::string& file = "ngan_cooktorrance.fit") {
+  for (const PublishedFit& fit :
+       readPublishedFits(std::filesystem::path(SCATTERLAB_DATA_DIR) / "published-fits" / file))
     if (fit.name == name) return fit.components();
   ADD_FAILURE() << name << " not in " << file;
   return {};

@@ -52,10 +52,12 @@ TEST(MeasurementSynthesis, StoresTheModelAtCellCentres) {
   const MerlTable table = partialTable(synthesizer);
   for (size_t cell : {merl::cellIndex(0, 0, 0), merl::cellIndex(3, 40, 17), merl::cellIndex(9, 80, 179)}) {
     const merl::CellCoordinates c = merl::cellCoordinates(cell);
-    const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 0.0,
-                                                 merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
+    const auto [wi, wo] =
+        directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 0.0,
+                               merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
     const Rgb expected = wi.z > 0 && wo.z > 0 ? diffuse.eval(wi, wo) + glossy->eval(wi, wo) : Rgb(0.0);
-    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(table.value(ch, cell), expected[ch], 1e-15 * expected[ch]) << cell;
+    for (int ch = 0; ch < 3; ++ch)
+      EXPECT_NEAR(table.value(ch, cell), expected[ch], 1e-15 * expected[ch]) << cell;
   }
 }
 
@@ -70,7 +72,8 @@ TEST(MeasurementSynthesis, SameSeedSameTableForAnySplitOfTheCells) {
   const MeasurementSynthesizer synthesizer({&diffuse}, p);
   const MerlTable whole = synthesizer.synthesize();
   MerlTable pieces;
-  for (const auto& [begin, end] : {std::pair{60, 90}, {0, 1}, {31, 60}, {1, 2}, {2, 31}})  // out of order, uneven
+  for (const auto& [begin, end] :
+       {std::pair{60, 90}, {0, 1}, {31, 60}, {1, 2}, {2, 31}})  // out of order, uneven
     synthesizer.fillThetaHalfCells(begin, end, pieces);
   EXPECT_TRUE(whole == pieces);
   EXPECT_TRUE(whole == MeasurementSynthesizer({&diffuse}, p).synthesize());
@@ -155,8 +158,9 @@ TEST(MeasurementSynthesis, MissingGrazingCellsAreMarkedNegative) {
   size_t expected = 0;
   for (size_t cell = 0; cell < merl::CellCount; ++cell) {
     const merl::CellCoordinates c = merl::cellCoordinates(cell);
-    const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 0.0,
-                                                 merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
+    const auto [wi, wo] =
+        directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 0.0,
+                               merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
     const bool grazing = wi.z < cosCut || wo.z < cosCut;
     expected += grazing ? 1 : 0;
     ASSERT_EQ(table.isMissing(cell), grazing) << cell;

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <limits>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
@@ -34,7 +34,8 @@ void writeBytes(const fs::path& path, const std::string& bytes) {
 
 // The bytes of a MERL file written by hand, independently of writeMerl: little-endian
 // header, then the channel-planar doubles (this machine is little-endian; checked below).
-std::string handWrittenFile(const std::vector<double>& stored, std::array<int32_t, 3> header = {90, 90, 180}) {
+std::string handWrittenFile(const std::vector<double>& stored,
+                            std::array<int32_t, 3> header = {90, 90, 180}) {
   std::string bytes(12 + stored.size() * 8, '\0');
   std::memcpy(bytes.data(), header.data(), 12);
   std::memcpy(bytes.data() + 12, stored.data(), stored.size() * 8);
@@ -64,7 +65,8 @@ std::string readErrorOf(const fs::path& path) {
 
 void expectMentions(const std::string& message, const std::vector<std::string>& fragments) {
   for (const std::string& fragment : fragments)
-    EXPECT_NE(message.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from: " << message;
+    EXPECT_NE(message.find(fragment), std::string::npos)
+        << "\"" << fragment << "\" missing from: " << message;
 }
 
 // ---- Layout -------------------------------------------------------------------------------
@@ -209,8 +211,9 @@ TEST(MerlIo, TruncatedFilesAreRejected) {
   std::string bytes = handWrittenFile(std::vector<double>(3 * merl::CellCount, 1.0));
   bytes.resize(bytes.size() - 8);
   writeBytes(path, bytes);
-  expectMentions(readErrorOf(path), {path.string(), "truncated", std::to_string(merl::FileBytes - 8) + " bytes",
-                                     std::to_string(merl::FileBytes)});
+  expectMentions(readErrorOf(path),
+                 {path.string(), "truncated", std::to_string(merl::FileBytes - 8) + " bytes",
+                  std::to_string(merl::FileBytes)});
   fs::remove(path);
 }
 

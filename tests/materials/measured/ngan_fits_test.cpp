@@ -27,8 +27,8 @@ std::string errorOf(const std::string& line) {
 }
 
 TEST(PublishedFits, EveryShippedFileHasItsEightySixMaterials) {
-  for (const char* file : {"ngan_cooktorrance.fit", "ngan_ward.fit", "ngan_ashikhminshirley.fit", "ngan_blinnphong.fit",
-                           "ngan_lafortune.fit"}) {
+  for (const char* file : {"ngan_cooktorrance.fit", "ngan_ward.fit", "ngan_ashikhminshirley.fit",
+                           "ngan_blinnphong.fit", "ngan_lafortune.fit"}) {
     SCOPED_TRACE(file);
     const auto fits = readPublishedFits(fitsDir() / file);
     std::set<std::string> names;
@@ -43,8 +43,8 @@ TEST(PublishedFits, EveryShippedFileHasItsEightySixMaterials) {
 // rejected with the registry's message (data/published-fits/README.md lists them).
 TEST(PublishedFits, LinesBuildOrAreRejectedByTheRegistry) {
   std::set<std::string> rejected;
-  for (const char* file : {"ngan_cooktorrance.fit", "ngan_ward.fit", "ngan_ashikhminshirley.fit", "ngan_blinnphong.fit",
-                           "ngan_lafortune.fit"})
+  for (const char* file : {"ngan_cooktorrance.fit", "ngan_ward.fit", "ngan_ashikhminshirley.fit",
+                           "ngan_blinnphong.fit", "ngan_lafortune.fit"})
     for (const PublishedFit& fit : readPublishedFits(fitsDir() / file))
       for (const json& component : fit.components()) {
         try {
@@ -54,14 +54,16 @@ TEST(PublishedFits, LinesBuildOrAreRejectedByTheRegistry) {
           rejected.insert(std::string(file) + ":" + fit.name);
         }
       }
-  EXPECT_EQ(rejected.size(), 12u) << "5 Blinn-Phong sharpness > 1e5, 5 Lafortune sharpness > 1e4, 2 Lafortune albedo > 1";
+  EXPECT_EQ(rejected.size(), 12u)
+      << "5 Blinn-Phong sharpness > 1e5, 5 Lafortune sharpness > 1e4, 2 Lafortune albedo > 1";
   EXPECT_TRUE(rejected.contains("ngan_lafortune.fit:black-phenolic"));
   EXPECT_TRUE(rejected.contains("ngan_blinnphong.fit:specular-violet-phenolic"));
 }
 
 TEST(PublishedFits, CookTorranceLineMapsToTheNganType) {
   const PublishedFit fit = parsePublishedFitLine(
-      "alum-bronze = Aggregate(Lambertian(albedo = [0.0886, 0.0602, 0.0299]), NganCookTorrance(albedo = [0.118, "
+      "alum-bronze = Aggregate(Lambertian(albedo = [0.0886, 0.0602, 0.0299]), NganCookTorrance(albedo = "
+      "[0.118, "
       "0.0698, 0.0371], eta = 0.203, roughness = 0.0367))");
   EXPECT_EQ(fit.name, "alum-bronze");
   EXPECT_EQ(fit.lobeModel, "NganCookTorrance");
@@ -75,10 +77,11 @@ TEST(PublishedFits, CookTorranceLineMapsToTheNganType) {
 }
 
 TEST(PublishedFits, LafortuneAndBlinnPhongMapToTheirRegistryTypes) {
-  const auto lafortune = parsePublishedFitLine(
-                             "x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganLafortune(albedo = [0.01, "
-                             "0.02, 0.03], Cxy = -0.577, Cz = 0.5, sharpness = 400.0))")
-                             .components();
+  const auto lafortune =
+      parsePublishedFitLine(
+          "x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganLafortune(albedo = [0.01, "
+          "0.02, 0.03], Cxy = -0.577, Cz = 0.5, sharpness = 400.0))")
+          .components();
   EXPECT_EQ(lafortune[1], (json{{"type", "lafortune"},
                                 {"kd", 0.0},
                                 {"ks", {0.01, 0.02, 0.03}},
@@ -87,25 +90,30 @@ TEST(PublishedFits, LafortuneAndBlinnPhongMapToTheirRegistryTypes) {
                                 {"cz", 0.5},
                                 {"exponent", 400.0},
                                 {"normalization", "ngan"}}));
-  const auto blinn = parsePublishedFitLine(
-                         "y = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganBlinnPhong(albedo = [0.01, 0.02, "
-                         "0.03], sharpness = 5000))")
-                         .components();
-  EXPECT_EQ(blinn[1], (json{{"type", "blinn-phong"}, {"kd", 0.0}, {"ks", {0.01, 0.02, 0.03}}, {"exponent", 5000}}));
+  const auto blinn =
+      parsePublishedFitLine(
+          "y = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganBlinnPhong(albedo = [0.01, 0.02, "
+          "0.03], sharpness = 5000))")
+          .components();
+  EXPECT_EQ(blinn[1],
+            (json{{"type", "blinn-phong"}, {"kd", 0.0}, {"ks", {0.01, 0.02, 0.03}}, {"exponent", 5000}}));
 }
 
 TEST(PublishedFits, MalformedLinesSayWhatAndWhere) {
   EXPECT_NE(errorOf("no equals sign").find("name = Aggregate"), std::string::npos);
-  EXPECT_NE(errorOf("x = Aggregate(Lambertian(albedo = [0.1, 0.2]), NganWard(albedo = [1,1,1], roughness = 0.1))")
-                .find("\"albedo\" must be [r, g, b]"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf("x = Aggregate(Lambertian(albedo = [0.1, 0.2]), NganWard(albedo = [1,1,1], roughness = 0.1))")
+          .find("\"albedo\" must be [r, g, b]"),
+      std::string::npos);
   EXPECT_NE(errorOf("x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganWard(albedo = [1,1,1]))")
                 .find("\"roughness\" is missing"),
             std::string::npos);
-  EXPECT_NE(errorOf("x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), Fancy(a = 1))").find("unknown lobe model \"Fancy\""),
+  EXPECT_NE(errorOf("x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), Fancy(a = 1))")
+                .find("unknown lobe model \"Fancy\""),
             std::string::npos);
-  const std::string column = errorOf("x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganWard(albedo = [1,1,1], "
-                                     "roughness = abc))");
+  const std::string column = errorOf(
+      "x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), NganWard(albedo = [1,1,1], "
+      "roughness = abc))");
   EXPECT_NE(column.find("expected a finite number at column 92"), std::string::npos) << column;
 }
 

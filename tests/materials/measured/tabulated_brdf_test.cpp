@@ -14,8 +14,8 @@
 namespace scatterlab {
 namespace {
 
-using nlohmann::json;
 using measured_test::synthesise;
+using nlohmann::json;
 
 // Float storage of the table: 2^-24 relative, with room for the interpolation's sums.
 constexpr double FloatRounding = 1e-6;
@@ -41,11 +41,13 @@ TEST(TabulatedBrdf, ReproducesTheTableAtCellCentres) {
     if (!isReachableCell(cell)) continue;
     const merl::CellCoordinates c = merl::cellCoordinates(cell);
     // Any phi_h: the table is isotropic.
-    const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 2.0 * Pi * rng.uniform(),
-                                                 merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
+    const auto [wi, wo] =
+        directionsFromHalfDiff(merl::thetaHalfAt(c.thetaHalf + 0.5), 2.0 * Pi * rng.uniform(),
+                               merl::thetaDiffAt(c.thetaDiff + 0.5), merl::phiDiffAt(c.phiDiff + 0.5));
     const Rgb f = brdf.eval(wi, wo);
     for (int ch = 0; ch < 3; ++ch)
-      ASSERT_NEAR(f[ch], truth.table.value(ch, cell), FloatRounding * truth.table.value(ch, cell)) << "cell " << cell;
+      ASSERT_NEAR(f[ch], truth.table.value(ch, cell), FloatRounding * truth.table.value(ch, cell))
+          << "cell " << cell;
     ++checked;
   }
 }
@@ -68,18 +70,20 @@ constexpr double Slack = 0.5;
 
 struct InterpolationStats {
   int points = 0;
-  double worstRatio = 0;    // max error / (bound + float rounding)
-  double sumRelative = 0;   // for the mean relative error
+  double worstRatio = 0;   // max error / (bound + float rounding)
+  double sumRelative = 0;  // for the mean relative error
   double maxRelative = 0;
 };
 
 // f of `truth` at continuous index coordinates (cell centres are at i + 0.5).
 Rgb modelAt(const measured_test::SynthesisedTable& truth, double xh, double xd, double xp) {
-  const auto [wi, wo] = directionsFromHalfDiff(merl::thetaHalfAt(xh), 0.0, merl::thetaDiffAt(xd), merl::phiDiffAt(xp));
+  const auto [wi, wo] =
+      directionsFromHalfDiff(merl::thetaHalfAt(xh), 0.0, merl::thetaDiffAt(xd), merl::phiDiffAt(xp));
   return truth.truth(wi, wo);
 }
 
-InterpolationStats checkInterpolation(const measured_test::SynthesisedTable& truth, int points, uint64_t seed) {
+InterpolationStats checkInterpolation(const measured_test::SynthesisedTable& truth, int points,
+                                      uint64_t seed) {
   const TabulatedBrdf brdf(truth.table);
   InterpolationStats stats;
   CounterRng rng(seed, 0);
@@ -97,8 +101,9 @@ InterpolationStats checkInterpolation(const measured_test::SynthesisedTable& tru
     for (int a = -1; a <= 2; ++a)
       for (int b = -1; b <= 2; ++b)
         for (int c = -1; c <= 2; ++c)
-          reachable = reachable && isReachableCell(merl::cellIndex(h0 + a, d0 + b, (p0 + c + 2 * merl::PhiDiffCells) %
-                                                                                        merl::PhiDiffCells));
+          reachable =
+              reachable && isReachableCell(merl::cellIndex(
+                               h0 + a, d0 + b, (p0 + c + 2 * merl::PhiDiffCells) % merl::PhiDiffCells));
     if (!reachable) continue;
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b)
@@ -117,8 +122,8 @@ InterpolationStats checkInterpolation(const measured_test::SynthesisedTable& tru
       const double error = std::abs(table[ch] - model[ch]);
       const double allowed = bound[ch] * (1 + Slack) + FloatRounding * model[ch];
       EXPECT_LE(error, allowed) << "channel " << ch << " at theta_h " << degrees(hd.thetaHalf) << " theta_d "
-                                << degrees(hd.thetaDiff) << " phi_d " << degrees(hd.phiDiff) << ": table " << table[ch]
-                                << " model " << model[ch] << " bound " << bound[ch];
+                                << degrees(hd.thetaDiff) << " phi_d " << degrees(hd.phiDiff) << ": table "
+                                << table[ch] << " model " << model[ch] << " bound " << bound[ch];
       stats.worstRatio = std::max(stats.worstRatio, error / (bound[ch] + FloatRounding * model[ch]));
       const double relative = error / model[ch];
       stats.sumRelative += relative;
@@ -130,8 +135,9 @@ InterpolationStats checkInterpolation(const measured_test::SynthesisedTable& tru
 }
 
 void report(const std::string& name, const InterpolationStats& s) {
-  std::printf("[ interpolation ] %s: %d points, worst error / bound %.3f, relative error mean %.2e max %.2e\n",
-              name.c_str(), s.points, s.worstRatio, s.sumRelative / (3 * s.points), s.maxRelative);
+  std::printf(
+      "[ interpolation ] %s: %d points, worst error / bound %.3f, relative error mean %.2e max %.2e\n",
+      name.c_str(), s.points, s.worstRatio, s.sumRelative / (3 * s.points), s.maxRelative);
 }
 
 TEST(TabulatedBrdfInterpolation, GgxConductorWithinTheBinningBound) {
@@ -145,7 +151,8 @@ TEST(TabulatedBrdfInterpolation, GgxConductorWithinTheBinningBound) {
 }
 
 TEST(TabulatedBrdfInterpolation, BlinnPhongPlusDiffuseWithinTheBinningBound) {
-  const auto truth = synthesise({json{{"type", "blinn-phong"}, {"kd", 0.3}, {"ks", 0.05}, {"exponent", 2000}}});
+  const auto truth =
+      synthesise({json{{"type", "blinn-phong"}, {"kd", 0.3}, {"ks", 0.05}, {"exponent", 2000}}});
   const InterpolationStats stats = checkInterpolation(truth, 3000, 19);
   report("blinn-phong n 2000", stats);
   EXPECT_LT(stats.worstRatio, 1 + Slack);
@@ -258,7 +265,8 @@ TEST(TabulatedBrdfFill, NoisyTableWithMissingGrazingNeverEvaluatesNegative) {
   const TabulatedBrdf brdf(truth.table);
   CounterRng rng(37, 0);
   for (int i = 0; i < 20000; ++i) {
-    const Rgb f = brdf.eval(sampleUniformHemisphere(rng.uniform2D()), sampleUniformHemisphere(rng.uniform2D()));
+    const Rgb f =
+        brdf.eval(sampleUniformHemisphere(rng.uniform2D()), sampleUniformHemisphere(rng.uniform2D()));
     ASSERT_TRUE(isFinite(f) && f.x >= 0 && f.y >= 0 && f.z >= 0) << i;
   }
 }

@@ -66,8 +66,8 @@ std::unique_ptr<TabulatedBrdf> tabulatedFit(const std::string& name, double roug
 void printChiSquare(const CheckReport& report) {
   for (const CheckRow& row : report.rows)
     if (row.test == "chi2")
-      std::printf("[ chi2 ] %s wi %5.1f: chi2 %.1f dof %d p %.3f\n", row.material.c_str(), row.wiThetaDeg.value_or(-1),
-                  row.statistic, row.dof.value_or(0), row.pValue.value_or(-1));
+      std::printf("[ chi2 ] %s wi %5.1f: chi2 %.1f dof %d p %.3f\n", row.material.c_str(),
+                  row.wiThetaDeg.value_or(-1), row.statistic, row.dof.value_or(0), row.pValue.value_or(-1));
 }
 
 class TabulatedKit : public ::testing::TestWithParam<KitCase> {};
@@ -109,7 +109,8 @@ TEST_P(TabulatedNegativeControls, AreAllRejected) {
   const ControlCase& c = GetParam();
   const auto model = tabulatedFit(c.material);
   const auto rougher = tabulatedFit(c.material, 1.1);
-  const CheckReport report = runNegativeControls(*model, rougher.get(), c.material, suiteOptions({c.wiTheta}));
+  const CheckReport report =
+      runNegativeControls(*model, rougher.get(), c.material, suiteOptions({c.wiTheta}));
   ASSERT_EQ(report.rows.size(), allNegativeControls().size());
   for (const CheckRow& row : report.rows) {
     EXPECT_TRUE(row.passed) << row.test << ": " << row.note;
@@ -161,12 +162,14 @@ double varianceRatio(const TabulatedBrdf& brdf, double wiTheta) {
 }
 
 TEST(TabulatedSamplerEfficiency, BeatsCosineSamplingOnSpecularMaterials) {
-  for (const auto& [name, minimum] : {std::pair<std::string, double>{"chrome", 1000.0}, {"gray-plastic", 10.0}}) {
+  for (const auto& [name, minimum] :
+       {std::pair<std::string, double>{"chrome", 1000.0}, {"gray-plastic", 10.0}}) {
     const auto brdf = tabulatedFit(name);
     for (double wiTheta : {0.0, 45.0, 80.0}) {
       const double ratio = varianceRatio(*brdf, wiTheta);
-      std::printf("[ efficiency ] %s wi %.0f: variance with cosine sampling / with the table's sampler = %.1f\n",
-                  name.c_str(), wiTheta, ratio);
+      std::printf(
+          "[ efficiency ] %s wi %.0f: variance with cosine sampling / with the table's sampler = %.1f\n",
+          name.c_str(), wiTheta, ratio);
       EXPECT_GT(ratio, minimum) << name << " wi " << wiTheta;
     }
   }
