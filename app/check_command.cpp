@@ -28,7 +28,7 @@ namespace {
 
 using nlohmann::json;
 
-// VALIDATION.md's negative control: sample from a roughness 10% off the one pdf() uses.
+// docs/validation.md's negative control: sample from a roughness 10% off the one pdf() uses.
 constexpr double RoughnessMismatchFactor = 1.1;
 
 constexpr uint64_t MinSamples = 1000;

@@ -1,4 +1,4 @@
-// The `scatterlab` command line: one executable, one subcommand per task (DESIGN.md).
+// The `scatterlab` command line: one executable, one subcommand per task (docs/design.md).
 #pragma once
 
 namespace scatterlab {

@@ -1,4 +1,4 @@
-// How `scatterlab` ends (DESIGN.md, "The command line"). Scripts and CI rely on these.
+// How `scatterlab` ends (docs/design.md, "The command line"). Scripts and CI rely on these.
 #pragma once
 
 #include <stdexcept>

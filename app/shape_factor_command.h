@@ -1,6 +1,6 @@
 // `scatterlab shape-factor`: Burley's searchlight shape factor s(A) fitted to the half-space
 // random walk over a list of albedos A (fitting/burley_shape_fit.h), next to Christensen &
-// Burley 2015's published fit s = 1.85 - A + 7 |A - 0.8|^3: the table of issue 7, part 5.
+// Burley 2015's published fit s = 1.85 - A + 7 |A - 0.8|^3 (docs/validation.md section 6).
 #pragma once
 
 #include <cstdint>

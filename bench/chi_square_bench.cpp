@@ -1,5 +1,5 @@
 // One whole chi-square test as `scatterlab check` runs it: 1e6 samples, a 64 x 128 grid,
-// adaptive quadrature of the pdf included. Target (issue 2): GGX alpha 0.1 at wi = 60 deg in
+// adaptive quadrature of the pdf included. Target: GGX alpha 0.1 at wi = 60 deg in
 // at most 1.0 s on the project's 2-core machine. Time is wall-clock (UseRealTime) because
 // the work runs on all cores through TBB.
 #include <benchmark/benchmark.h>

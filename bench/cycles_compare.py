@@ -10,10 +10,10 @@ For every (environment, resolution, material) it runs scatterlab and Cycles alte
 medians: scatterlab's whole-process wall time (start-up, map loading, sampling tables,
 path tracing, writing EXR and PNG) and its path-tracing time alone, Cycles' render_s (the
 render call: scene sync, BVH, path tracing; Blender's own start-up is not counted), their
-ratio, and path vertices per second. The requirement (issue 6) is ratio <= 0.5 for diffuse,
+ratio, and path vertices per second. The target is ratio <= 0.5 for diffuse,
 rough metal, glass and rough glass at 256 and 512 pixels, 64 spp, 2 threads. sss_burley and
 sss_rw (not in the default list) time subsurface spheres against Cycles' Principled
-subsurface methods (issue 7): scatterlab's diffusion mode and its random walk.
+subsurface methods: scatterlab's diffusion mode and its random walk.
 
 The materials are set as bench/cycles/cycles_sphere.py sets them: colour 1, roughness 0.3
 (GGX alpha 0.09), IOR 1.5; Cycles' Principled metal with base colour 1 has F = 1. "synthetic"

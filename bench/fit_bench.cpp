@@ -1,4 +1,4 @@
-// Fitting speed. The target (issue 5): a Lambert + GGX fit (white GGX conductor lobe with a
+// Fitting speed. The target: a Lambert + GGX fit (white GGX conductor lobe with a
 // fitted RGB scale, `--model lambertian+conductor`) to one full MERL-layout table, 1,458,000
 // cells x 3 channels, in at most 10 s on the project's 2-core machine: FitLambertGgxFullTable
 // (grid, multi-start on a stratified subset, refinement on every usable cell, covariance).

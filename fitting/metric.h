@@ -1,4 +1,4 @@
-// Error metrics of BRDF fits and robust losses (REFERENCES.md, "Ngan et al. 2005 models and
+// Error metrics of BRDF fits and robust losses (docs/references.md, "Ngan et al. 2005 models and
 // fitting metrics"). A metric compares a measured value f with the model's value m at a
 // direction pair (wi, wo) through a transform g and a weight w:
 //   residual = sqrt(w(theta_i, theta_o)) (g(f, cos theta_i) - g(m, cos theta_i)),

@@ -1,4 +1,4 @@
-// Subsurface materials in the path tracer (issue 7, part 6): a dielectric boundary (smooth, or
+// Subsurface materials in the path tracer: a dielectric boundary (smooth, or
 // rough GGX with multiple-scattering compensation) around a homogeneous medium, rendered in one
 // of two ways.
 //

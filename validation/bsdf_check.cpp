@@ -18,7 +18,7 @@ namespace {
 
 // Albedo from quadrature must not exceed 1 by more than the quadrature's own error.
 constexpr double AlbedoTolerance = 1e-4;
-// White furnace: lossless models reflect everything within 0.5% (VALIDATION.md section 3).
+// White furnace: lossless models reflect everything within 0.5% (docs/validation.md section 3).
 constexpr double FurnaceTolerance = 0.005;
 // Quadrature vs importance-sampled albedo: |difference| <= 5 standard errors (+ a floor for
 // the quadrature's error, which matters when the weight has zero variance, e.g. Lambertian).

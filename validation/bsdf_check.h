@@ -1,4 +1,4 @@
-// The whole kit run on one BSDF model over a set of incident angles (VALIDATION.md 1-4):
+// The whole kit run on one BSDF model over a set of incident angles (docs/validation.md 1-4):
 // chi-square of sample() against pdf(), per-sample consistency, pdf normalisation,
 // directional albedo <= 1 (quadrature and Monte Carlo), white furnace for lossless models,
 // and reciprocity. Used by `scatterlab check` and by the model tests.

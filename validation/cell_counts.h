@@ -1,5 +1,5 @@
 // Counting samples into the cells of any binning, for the chi-square tests that are not over
-// the sphere of directions (the 1-D radius test and the planar probe test, VALIDATION.md
+// the sphere of directions (the 1-D radius test and the planar probe test, docs/validation.md
 // section 6). Sample i draws from CounterRng(seed, i) and the counts are integers, so the
 // result is the same for any number of threads (TBB).
 #pragma once

@@ -1,5 +1,5 @@
 // Chi-square goodness of fit of a direction sampler against its claimed density
-// (VALIDATION.md section 1; the method of Mitsuba 0.6 / pbrt-v3, with adaptive quadrature
+// (docs/validation.md section 1; the method of Mitsuba 0.6 / pbrt-v3, with adaptive quadrature
 // for expected counts, delta-lobe support and hard failures for invalid samples).
 //
 // The pieces are separate so that a suite can reuse one pass of sampling and one pass of

@@ -1,4 +1,4 @@
-// What a chi-square test leaves behind for a person to look at (VALIDATION.md section 1, "On
+// What a chi-square test leaves behind for a person to look at (docs/validation.md section 1, "On
 // failure"): the observed, expected and (O - E) / sqrt(E) tables as PNG heatmaps, plus the raw
 // tables as JSON; for any binning laid out as a Table2D (the sphere's cos(theta) x phi, the
 // radius bins, the probe's rings x sectors), described in words by `layout`.

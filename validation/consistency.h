@@ -1,4 +1,4 @@
-// Per-sample consistency (VALIDATION.md section 2). The chi-square test only sees where
+// Per-sample consistency (docs/validation.md section 2). The chi-square test only sees where
 // samples land; it is blind to eval() and to the weight. Here every sample must satisfy
 //   weight == eval(wi, wo) |cos wo| / pdf(wi, wo)  and  sample.pdf == pdf(wi, wo),
 // and eval must vanish wherever pdf does (else the sampler cannot reach light the model
@@ -18,7 +18,7 @@
 namespace scatterlab {
 
 // Relative error with an absolute floor: |a - b| / max(|a|, |b|, 1e-2), so values below 1e-2
-// are compared to 1e-6 absolute when the tolerance is 1e-4 (VALIDATION.md section 2).
+// are compared to 1e-6 absolute when the tolerance is 1e-4 (docs/validation.md section 2).
 inline double consistencyError(double a, double b) {
   if (!std::isfinite(a) || !std::isfinite(b)) return a == b ? 0.0 : INFINITY;
   return std::abs(a - b) / std::max({std::abs(a), std::abs(b), 1e-2});

@@ -1,4 +1,4 @@
-// Normalisation and energy (VALIDATION.md section 3), from one quadrature pass that
+// Normalisation and energy (docs/validation.md section 3), from one quadrature pass that
 // integrates (pdf, f|cos| r, g, b) over every cell of the sphere.
 #pragma once
 
@@ -28,7 +28,7 @@ struct EnergyResult {
   Rgb albedo{0.0};  // integral of f |cos wo| (quadrature) + delta lobes
 };
 
-// Tolerance of the normalisation check: 1e-3 (VALIDATION.md), widened to 4 standard errors
+// Tolerance of the normalisation check: 1e-3 (docs/validation.md), widened to 4 standard errors
 // of the estimated failure probability when that is the larger (binomial noise).
 double normalisationTolerance(double failureProbability, size_t samples);
 

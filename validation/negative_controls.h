@@ -1,4 +1,4 @@
-// Deliberately wrong samplers (VALIDATION.md section 1, "Power"). Each wraps a correct model
+// Deliberately wrong samplers (docs/validation.md section 1, "Power"). Each wraps a correct model
 // and is internally self-consistent (sample() reports the wrapper's own pdf and a weight
 // that matches eval/pdf), so only the chi-square test can catch it. A kit that passes these
 // proves nothing; the suites assert that they are REJECTED.

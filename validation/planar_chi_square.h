@@ -1,5 +1,5 @@
 // The 2-D chi-square test of points sampled on a plane (exit points of the probe sampler,
-// VALIDATION.md section 6) against a density per unit area: polar cells (rings x sectors)
+// docs/validation.md section 6) against a density per unit area: polar cells (rings x sectors)
 // around the entry point, expected counts N * integral of pdf() over each cell by nested
 // adaptive quadrature in (ln rho, phi), and the pooling, statistic and p-value of
 // chi_square.h. Ring edges are given by the caller (equal in the radial CDF of the expected

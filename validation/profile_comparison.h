@@ -1,4 +1,4 @@
-// Every diffusion profile against the ground truth (issue 7, part 5; VALIDATION.md section 6):
+// Every diffusion profile against the ground truth (docs/validation.md section 6):
 // for one medium, the half-space random walk per channel (normal incidence, the medium's g and
 // eta) and the four models built from the same medium, compared by
 //  - the r-weighted relative error of R(r): the L1 distance between the radial distributions

@@ -1,4 +1,4 @@
-// The 1-D chi-square test of sampled radii against a radius density (VALIDATION.md section 6):
+// The 1-D chi-square test of sampled radii against a radius density (docs/validation.md section 6):
 // bins equal in the distribution's CDF (edges from its quantile function, so every bin expects
 // N / bins when the sampler is right), expected counts N * integral of pdf() over each bin by
 // adaptive quadrature in ln r (the densities span many decades of r), and the pooling,

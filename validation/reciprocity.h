@@ -1,4 +1,4 @@
-// Reciprocity (VALIDATION.md section 4), on random direction pairs over the whole sphere:
+// Reciprocity (docs/validation.md section 4), on random direction pairs over the whole sphere:
 // BRDF pairs (same side) need f(wi, wo) == f(wo, wi); BTDF pairs (opposite sides) need the
 // generalised relation (Veach 1997, eq. 5.14), with eta = 1 outside (z > 0) and the model's
 // relative index inside.

@@ -1,4 +1,4 @@
-// The size of the chi-square test, measured (VALIDATION.md section 1: "the suite also
+// The size of the chi-square test, measured (docs/validation.md section 1: "the suite also
 // reports how often a correct sampler fails over many seeds (should be ~alpha), rather than
 // picking lucky seeds"). One correct sampler is tested with many seeds at an unadjusted
 // significance alpha; the rejection rate must be Binomial(runs, alpha) and the p-values

@@ -1,6 +1,6 @@
 // The chi-square domain for directions: the whole sphere parameterised by (cos theta, phi)
 // in [-1, 1] x [-pi, pi]. The map is equal-area, so a cell's solid angle is its area in
-// these coordinates (VALIDATION.md section 1).
+// these coordinates (docs/validation.md section 1).
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// The kit run on a subsurface material (VALIDATION.md section 6), used by `scatterlab check`
+// The kit run on a subsurface material (docs/validation.md section 6), used by `scatterlab check`
 // and by the tests: per reflecting channel, the profile's energy (integral of 2 pi r R by
 // quadrature against its closed form), the 1-D radius chi-square (bins equal in the CDF),
 // per-sample consistency (pdf == 2 pi r R / Rd, weight == Rd) and the inverse CDF round trip;

@@ -1,4 +1,4 @@
-// Deliberately wrong subsurface samplers (VALIDATION.md section 1, "Power", for section 6):
+// Deliberately wrong subsurface samplers (docs/validation.md section 1, "Power", for section 6):
 // each is self-consistent in everything but the one claim the chi-square test is there to
 // check, and the kit must reject it.
 //  - RadiusPdfHighOnHalf: radiusPdf() 5% too high below each channel's median radius; the

@@ -1,5 +1,5 @@
 // `scatterlab lab [MATERIAL ...] [--out DIR] [--quick]`: one static HTML report per run, with
-// every material's verdict, plots, fits and renders (issue 8). With no MATERIAL it reports on
+// every material's verdict, plots, fits and renders. With no MATERIAL it reports on
 // the built-in showcase (lab_showcase.h). DIR is replaced whole or not at all
 // (staged_directory.h); the report opens from the file system, with no server.
 #pragma once

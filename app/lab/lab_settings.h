@@ -1,5 +1,5 @@
 // How much work `scatterlab lab` does per material, in its two modes. The numbers are chosen
-// for the time limits of issue 8 on 2 cores: `--quick` runs the five showcase materials in
+// for a 2-core machine: `--quick` runs the five showcase materials in
 // well under 2 minutes, the full report in well under 15 (the report's timings table shows
 // what each phase cost).
 //

@@ -2,7 +2,7 @@
 //
 // Kernels are templated on the scalar T (double, or ceres::Jet for fitting): math calls are
 // unqualified after `using std::...`, and every branch that guards a singular point keeps
-// the value AND the derivative finite (DESIGN.md, "One model code").
+// the value AND the derivative finite (docs/design.md, "One model code").
 #pragma once
 
 #include "materials/core/math.h"

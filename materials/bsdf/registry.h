@@ -1,5 +1,5 @@
 // The material registry: builds every BSDF model from its JSON description and describes
-// every model's parameters for `scatterlab models` (DESIGN.md, "Material descriptions").
+// every model's parameters for `scatterlab models` (docs/design.md, "Material descriptions").
 //
 // Each model is one entry: a declarative parameter spec and a build function. Parsing and
 // validation are generic over the spec, so an error always names the key, the value given

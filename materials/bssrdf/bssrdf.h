@@ -1,6 +1,6 @@
 // Subsurface scattering: the radial-profile interface every diffusion model implements.
 //
-// Conventions (DESIGN.md; every profile, sampler, test and the CLI rely on them):
+// Conventions (docs/design.md; every profile, sampler, test and the CLI rely on them):
 //  - Lengths in mm, coefficients in mm^-1 (Jensen et al. 2001), per linear-RGB channel.
 //  - A medium (medium.h) is sigma_s, sigma_a, the Henyey-Greenstein g and eta, the index of
 //    refraction inside relative to outside. Reduced: sigma_s' = sigma_s (1 - g),
@@ -18,7 +18,7 @@
 //    cdf / pdf / inverse triplet of one function: sampleRadius(c, radiusCdf(c, r)) = r.
 //  - Model kernels are templated on the scalar T (double, ceres::Jet): math is unqualified
 //    after `using std::...`, constants are T(...), guards keep values and derivatives finite
-//    (DESIGN.md, "One model code"). The classes below forward to kernel<double>.
+//    (docs/design.md, "One model code"). The classes below forward to kernel<double>.
 #pragma once
 
 #include <string>

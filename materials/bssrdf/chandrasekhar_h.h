@@ -4,7 +4,7 @@
 // solved by fixed-point iteration of H(mu_i) = 1 / (1 - (c/2) mu_i sum_j w_j H(mu_j) / (mu_i +
 // mu_j)) on 64 Gauss-Legendre nodes of [0, 1] (converging monotonically from H = 1 for c < 1),
 // then extended to any mu by the same equation (Nystrom interpolation). It gives the exact
-// reflectance of the index-matched, isotropically scattering half-space (VALIDATION.md
+// reflectance of the index-matched, isotropically scattering half-space (docs/validation.md
 // section 6), the ground truth the random walk must reproduce:
 //   BRDF f = (c / 4 pi) H(mu_i) H(mu_o) / (mu_i + mu_o),
 //   directional albedo R(mu_0) = 1 - H(mu_0) sqrt(1 - c),

@@ -1,5 +1,5 @@
 // The ground truth of every diffusion profile: a volumetric random walk (analog Monte Carlo)
-// in a homogeneous half-space z < 0, boundary z = 0 (VALIDATION.md section 6).
+// in a homogeneous half-space z < 0, boundary z = 0 (docs/validation.md section 6).
 //
 // Light enters at the origin: the searchlight (a beam at incidence cos theta, refracted by
 // Snell's law when eta != 1), or diffuse light (cosine-weighted outside, refracted, and kept
@@ -17,7 +17,7 @@
 // Path i draws from CounterRng(seed, i) and the tallies are integers, so the result is the
 // same for any number of threads. This file holds one path and the tally; the parallel driver
 // over many paths, simulateHalfSpace, is validation/half_space_reference.h (materials stays free
-// of threading, DESIGN.md).
+// of threading, docs/design.md).
 #pragma once
 
 #include <cstdint>

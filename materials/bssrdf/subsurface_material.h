@@ -1,5 +1,5 @@
 // A subsurface material: a medium, a diffusion profile built from it, and the boundary the
-// later renderer puts around it (issue 7, parts 1-2). The three ways to give the medium
+// renderer puts around it (integrator/subsurface.h). The three ways to give the medium
 // (registry: subsurface_registry.h) end here as a ScatteringMedium:
 //  - coefficients sigma_s, sigma_a (mm^-1), g, eta, as they are;
 //  - a measured medium of Jensen et al. 2001 (measured_media.h): the table's reduced

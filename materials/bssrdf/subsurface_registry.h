@@ -1,4 +1,4 @@
-// The registry entry of subsurface materials (DESIGN.md, "Material descriptions"):
+// The registry entry of subsurface materials (docs/design.md, "Material descriptions"):
 //   {"type": "subsurface", "profile": "burley", "medium": "Skin1", "scale": 1.0}
 // It shares the BSDF registry's parameter specs and validation (registry.h: every error names
 // the key, the value and what is allowed), is listed by `scatterlab models` with the BSDFs

@@ -3,7 +3,7 @@
 // Kernels are templated on the scalar type T (double for rendering, ceres::Jet for fitting).
 // Functions here call sqrt/acos/... unqualified after `using std::...` so that the Jet
 // overloads are found by argument-dependent lookup, and they guard singular points so that
-// the value AND the derivative stay finite (DESIGN.md, "One model code").
+// the value AND the derivative stay finite (docs/design.md, "One model code").
 #pragma once
 
 #include <algorithm>
@@ -19,7 +19,7 @@ template <typename T> using Vec2 = glm::vec<2, T, glm::defaultp>;
 template <typename T> using Vec3 = glm::vec<3, T, glm::defaultp>;
 using Vec2d = Vec2<double>;
 using Vec3d = Vec3<double>;
-// Linear RGB, Rec.709 primaries (DESIGN.md conventions).
+// Linear RGB, Rec.709 primaries (docs/design.md conventions).
 template <typename T> using RgbT = Vec3<T>;
 using Rgb = RgbT<double>;
 

@@ -1,4 +1,4 @@
-// Burley's shape factor fitted to the half-space random walk (issue 7, part 5): Christensen &
+// Burley's shape factor fitted to the half-space random walk (docs/validation.md section 6): Christensen &
 // Burley 2015's searchlight fit s = 1.85 - A + 7 |A - 0.8|^3 against the walk as the Monte
 // Carlo reference, by least squares of r R(r) over radius (burley_shape_fit.h). The full table
 // over A in [0.1, 0.99] is `scatterlab shape-factor`.

@@ -1,6 +1,6 @@
 // Every kernel the fitter differentiates, checked with ceres::GradientChecker: the Jet
 // derivatives of the shape slots against central differences, at ordinary, near-specular and
-// grazing geometry and at the small end of the roughness range (DESIGN.md, "One model code":
+// grazing geometry and at the small end of the roughness range (docs/design.md, "One model code":
 // value and derivative must stay finite at singular points).
 //
 // Tolerance: GradientChecker differentiates numerically by Ridders' extrapolation and compares

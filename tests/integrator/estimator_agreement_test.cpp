@@ -1,4 +1,4 @@
-// One answer from three estimators (VALIDATION.md section 7): BSDF sampling only, light
+// One answer from three estimators (docs/validation.md section 7): BSDF sampling only, light
 // sampling only and their combination by MIS are unbiased estimators of the same image, so
 // their renders (independent seeds) differ only by noise.
 //

@@ -1,4 +1,4 @@
-// The white furnace (VALIDATION.md section 7): under a constant white environment a sphere of
+// The white furnace (docs/validation.md section 7): under a constant white environment a sphere of
 // a lossless material reflects (or passes) everything, so every pixel of the image, sphere or
 // not, is 1 within noise, and the background is exactly 1. And a diffuse sphere under a
 // uniform colour renders albedo x colour.

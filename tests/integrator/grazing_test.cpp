@@ -1,4 +1,4 @@
-// No non-finite pixel for any catalog material at grazing views (VALIDATION.md section 7):
+// No non-finite pixel for any catalog material at grazing views (docs/validation.md section 7):
 // every example BSDF of data/materials, every BSDF model's defaults, and a measured table,
 // rendered where almost every camera ray grazes the surface (a narrow view of the sphere's
 // silhouette, and a ground plane seen from 0.01 units above), under a map with a very bright

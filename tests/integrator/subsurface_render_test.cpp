@@ -1,4 +1,4 @@
-// Subsurface spheres in the path tracer (issue 7, part 6; integrator/subsurface.h): the
+// Subsurface spheres in the path tracer (integrator/subsurface.h): the
 // random-walk mode's furnace, the diffusion render against the random walk, and images that do
 // not depend on the thread count.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The lab report in a real browser (issue 8): opens DIR/index.html from the file system in
+// The lab report in a real browser: opens DIR/index.html from the file system in
 // Debian's headless Chromium, driven by playwright-core (both installed by scripts/setup), and
 // checks that every image loaded, every chart was drawn by Chart.js with data on a canvas that
 // is not blank, that every material has its renders or the renderer's message in their place,

@@ -1,4 +1,4 @@
-// Every diffusion profile against the half-space random walk (issue 7, part 5): the numbers the
+// Every diffusion profile against the half-space random walk (docs/validation.md section 6): the numbers the
 // physics of each model says they should have. `scatterlab profile MATERIAL --reference walk
 // --compare` prints the same table for any medium.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Blends through the whole test kit (VALIDATION.md sections 1-4): a Lambertian with a rough
+// Blends through the whole test kit (docs/validation.md sections 1-4): a Lambertian with a rough
 // conductor at w = 0.3, two conductors of very different roughness with a coloured weight, a
 // white Lambertian with a smooth dielectric (delta reflection and refraction: the kit adds
 // their discrete probabilities to the chi-square expectation), and a blend of two lossless
@@ -78,7 +78,7 @@ TEST(BlendKitSmoke, LosslessPairPassesTheFurnace) {
 }
 [[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
-// The kit must reject deliberately broken samplers of blends (VALIDATION.md section 1). A blend
+// The kit must reject deliberately broken samplers of blends (docs/validation.md section 1). A blend
 // has no single lobe width, so the roughness-mismatch control reports "not applicable".
 struct ControlCase {
   const char* name;

@@ -1,5 +1,5 @@
-// The microfacet conductor through the whole test kit (VALIDATION.md sections 1-4) over the
-// parameter grid of issue 2: GGX and Beckmann, visible-normal and classic sampling, alpha
+// The microfacet conductor through the whole test kit (docs/validation.md sections 1-4) over the
+// parameter grid: GGX and Beckmann, visible-normal and classic sampling, alpha
 // 0.001 .. 1 and anisotropy 0.05 x 0.8, incident angles up to 89.9 degrees; plus the
 // negative controls, which the kit must reject for this model too.
 #include <gtest/gtest.h>

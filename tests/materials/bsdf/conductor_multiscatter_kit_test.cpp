@@ -1,4 +1,4 @@
-// The Kulla-Conty compensated conductor through the whole test kit (VALIDATION.md sections
+// The Kulla-Conty compensated conductor through the whole test kit (docs/validation.md sections
 // 1-4): its sampler is a mixture (the single-scattering lobe with probability E(wi), the
 // compensation lobe's tabulated sampler otherwise) with the exact mixture pdf, so chi-square,
 // consistency and normalisation apply

@@ -63,7 +63,7 @@ TEST(MicrofacetConductor, EvalIsReciprocal) {
   }
 }
 
-// VALIDATION.md section 2, per sample: weight == f |cos wo| / pdf and the sample's pdf is
+// docs/validation.md section 2, per sample: weight == f |cos wo| / pdf and the sample's pdf is
 // pdf(wi, wo). Relative 1e-10: the weight is computed in a cancelled closed form, so only
 // round-off separates the two.
 TEST(MicrofacetConductor, SampleWeightAndPdfAreConsistentWithEvalAndPdf) {
@@ -143,7 +143,7 @@ TEST(MicrofacetConductor, SmoothPerfectConductorHasUnitAlbedo) {
 }
 
 // The two sampling schemes draw different densities, yet each pdf integrates, over the
-// upper hemisphere, to the fraction of samples that do not fail (VALIDATION.md section 3),
+// upper hemisphere, to the fraction of samples that do not fail (docs/validation.md section 3),
 // and both give the same directional albedo as deterministic quadrature of f |cos|.
 TEST(MicrofacetConductor, ClassicAndVisibleSamplingAreBothNormalised) {
   for (const MicrofacetType type : {MicrofacetType::Ggx, MicrofacetType::Beckmann}) {

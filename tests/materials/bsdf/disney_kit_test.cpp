@@ -1,4 +1,4 @@
-// The Disney BRDF through the whole test kit (VALIDATION.md sections 1-4) over a grid with the
+// The Disney BRDF through the whole test kit (docs/validation.md sections 1-4) over a grid with the
 // hard corners: roughness 0 (alpha on its 0.001 floor, next to the cosine lobe) and 1, metallic
 // 0 and 1, anisotropic 0.9 (alpha 0.032 x 0.0032 and 0.28 x 0.028), clearcoat 1 with gloss 0 and 1
 // (GTR1 alpha 0.1 and 0.001), tinted sheen 1, subsurface 1, at incident angles up to 89.9
@@ -103,7 +103,7 @@ TEST(DisneyKitEnergy, WhiteRoughBaseFailsOnlyTheAlbedoRow) {
   EXPECT_EQ(albedoRows, int(WhiteRoughAngles.size()));
 }
 
-// The kit must reject deliberately broken samplers of this model (VALIDATION.md section 1):
+// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1):
 // a metal whose samples come from the GGX and GTR1 lobes, and a mixture of all three samplers
 // near grazing incidence.
 struct ControlCase {

@@ -129,7 +129,7 @@ TEST(Eon, FittedAlbedoIsWithinItsStatedError) {
   EXPECT_GT(worst, 4.0e-4);  // the bound is tight, not loose
 }
 
-// White furnace (VALIDATION.md section 3), by quadrature of the model's eval over the
+// White furnace (docs/validation.md section 3), by quadrature of the model's eval over the
 // hemisphere: with the analytic albedo, 1 to the quadrature's accuracy; with the paper's fit,
 // 1 within 1e-3, the fit's own error (4.7e-4 at most in E, 5.4e-4 measured in the albedo)
 // with a factor 2 for the quadrature.

@@ -176,7 +176,7 @@ TEST(KullaConty, IsLosslessOnlyWhenCompensatedAndWhite) {
 // The directional albedo of the white compensated conductor, split as the model is built:
 // single scattering, whose albedo is E(wi) by the generator's quadrature (at 1e-5, no
 // table), plus the lobe, smooth in wo, integrated over the hemisphere (relative 1e-6). With
-// F = 1 it must be 1 within 0.5% (VALIDATION.md section 3) at every incident direction of the
+// F = 1 it must be 1 within 0.5% (docs/validation.md section 3) at every incident direction of the
 // kit, for alpha 0.001 .. 1 and strong anisotropy; the deviation is the table's interpolation
 // error at wi (isotropic: 2e-4; anisotropic 0.05 x 0.8: 4e-3 worst, near grazing).
 struct FurnaceCase {
@@ -258,7 +258,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, KullaContyFurnace, ::testing::ValuesIn(furnaceCas
 
 // ---- The uncompensated model reports its loss ----
 
-// The kit's albedo row says how much a lossy model loses (VALIDATION.md section 3); for the
+// The kit's albedo row says how much a lossy model loses (docs/validation.md section 3); for the
 // white single-scattering GGX conductor at alpha 0.09 and 60 degrees it must be 1 - E(0.5),
 // here by the generator's quadrature (2.49%), to the row's two decimals.
 TEST(KullaConty, KitAlbedoRowReportsTheSingleScatteringLoss) {

@@ -1,4 +1,4 @@
-// The rough dielectric through the whole test kit (VALIDATION.md sections 1-4), from both
+// The rough dielectric through the whole test kit (docs/validation.md sections 1-4), from both
 // sides of the interface: GGX and Beckmann, alpha 0.001 .. 1 and anisotropy 0.05 x 0.8,
 // eta 1.1 / 1.5 / 2.4, incident angles 0 .. 89.9 degrees from outside and (the kit adds them
 // for transmission) 180 - theta from inside, where eta < 1 and total internal reflection

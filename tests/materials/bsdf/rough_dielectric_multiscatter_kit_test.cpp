@@ -1,4 +1,4 @@
-// The Kulla-Conty compensated rough dielectric through the whole test kit (VALIDATION.md
+// The Kulla-Conty compensated rough dielectric through the whole test kit (docs/validation.md
 // sections 1-4), from both sides of the interface: chi-square, consistency in both transport
 // modes, the transport-mode relation, normalisation, albedo (quadrature and Monte Carlo), the
 // furnace row (the model is lossless), and the generalised reciprocity in both modes with the

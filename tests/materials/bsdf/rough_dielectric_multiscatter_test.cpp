@@ -313,7 +313,7 @@ TEST(RoughDielectricCompensation, IsLosslessOnlyWhenCompensatedAndNeedsIsotropic
 // hemisphere (2 pi integral of (f - f_single) mu dmu). The pieces are 8 per decade of mu_o
 // from 1e-7 and 0.02 wide above 0.1: at alpha 0.001 the loss 1 - E(mu_o) is ~1e-5 away from
 // grazing, the size of the tables' own error, so it wiggles between the nodes, and a coarse
-// adaptive rule missed 1% of it. The albedo must be 1 within 0.5% (VALIDATION.md section 3)
+// adaptive rule missed 1% of it. The albedo must be 1 within 0.5% (docs/validation.md section 3)
 // from both sides at every incident angle; what remains is the table's error at wi against
 // the reference, within 2e-4 (the quadrature's 5e-5 plus the interpolation's 1e-4 bound,
 // with margin).

@@ -1,4 +1,4 @@
-// Rough plastic through the whole test kit (VALIDATION.md sections 1-4) over a grid with the
+// Rough plastic through the whole test kit (docs/validation.md sections 1-4) over a grid with the
 // hard corners: alpha 0.001 and 1, a black and a white base (white: lossless, so the furnace
 // check runs), indices 1.1 to 2.4, GGX and Beckmann, incident angles up to 89.9 degrees; plus
 // the negative controls, which the kit must reject for this model too.
@@ -77,7 +77,7 @@ TEST(RoughPlasticKitSmoke, ColouredGgxPassesAt85Degrees) {
 }
 [[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
-// The kit must reject deliberately broken samplers of this model (VALIDATION.md section 1).
+// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1).
 struct ControlCase {
   const char* name;
   nlohmann::json material;

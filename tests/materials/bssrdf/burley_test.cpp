@@ -6,7 +6,7 @@ namespace scatterlab {
 namespace {
 
 TEST(BurleyProfile, InverseCdfRoundTripsTo1e10) {
-  // VALIDATION.md section 6: F(r(u)) = u to 1e-10 for the exact closed-form inverse.
+  // docs/validation.md section 6: F(r(u)) = u to 1e-10 for the exact closed-form inverse.
   for (const double d : {0.05, 1.0, 7.0}) {
     double worst = 0.0;
     for (int k = 0; k <= 100000; ++k) {

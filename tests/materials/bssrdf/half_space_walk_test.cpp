@@ -1,4 +1,4 @@
-// The random walk against the exact half-space solution (VALIDATION.md section 6): index
+// The random walk against the exact half-space solution (docs/validation.md section 6): index
 // matched, isotropic, total reflectance within 3 standard errors of 1 - H(mu0) sqrt(1 - c).
 // 2e5 paths give standard errors of ~1e-3: a bias of 5e-3 would fail every run.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The profile kernels are templated for the fitter's ceres::Jet (DESIGN.md, "One model code"):
+// The profile kernels are templated for the fitter's ceres::Jet (docs/design.md, "One model code"):
 // each is instantiated with Jets here, and its derivatives are compared with central finite
 // differences of the double kernel (what ceres::GradientChecker does), including at the
 // guarded points (no absorption: sigma_tr = 0; Burley at r = 0).

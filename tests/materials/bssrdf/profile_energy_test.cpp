@@ -1,5 +1,5 @@
 // Every profile, on media across the albedo range: the numerical integral of 2 pi r R(r)
-// equals the closed form within 1e-4 (VALIDATION.md section 6), and radiusCdf / radiusPdf /
+// equals the closed form within 1e-4 (docs/validation.md section 6), and radiusCdf / radiusPdf /
 // sampleRadius are one distribution (cdf(sample(u)) = u, sample(cdf(r)) = r, pdf = dcdf/dr =
 // 2 pi r R / Rd).
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ class ProfileEnergy : public testing::TestWithParam<ProfileCase> {
   }
 };
 
-// Quadrature error is ~1e-9 relative; the closed forms are exact: 1e-4 (VALIDATION.md) is loose.
+// Quadrature error is ~1e-9 relative; the closed forms are exact: 1e-4 (docs/validation.md) is loose.
 TEST_P(ProfileEnergy, IntegralOfTheProfileEqualsItsClosedForm) {
   const auto p = profile();
   const Rgb total = p->totalReflectance();

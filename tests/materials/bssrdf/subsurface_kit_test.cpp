@@ -1,4 +1,4 @@
-// The statistical kit on every profile (VALIDATION.md section 6): energy, 1-D radius
+// The statistical kit on every profile (docs/validation.md section 6): energy, 1-D radius
 // chi-square, consistency and inverse round trip, the directional normalisation, and the 2-D
 // probe chi-square on a plane with the sampler's frame aligned and tilted; then the negative
 // controls, which the kit must reject, and a seed study of the radius test's size.

@@ -1,4 +1,4 @@
-// The MERL format (REFERENCES.md, "MERL BRDF binary format"): layout, binning, the half/diff
+// The MERL format (docs/references.md, "MERL BRDF binary format"): layout, binning, the half/diff
 // change of variables, bit-exact round trips, and the reader's and writer's errors.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The tabulated BRDF's own sampler through the whole test kit (VALIDATION.md section 5: the
+// The tabulated BRDF's own sampler through the whole test kit (docs/validation.md section 5: the
 // same chi-square, consistency and normalisation checks as the analytic models, against the
 // tabulated pdf), on measured-style tables of published fits: a near-mirror metal (chrome,
 // Beckmann roughness 0.009), a glossy plastic and a broad, mostly diffuse felt; incident angles
