@@ -1,6 +1,6 @@
 // The material registry's one list of models: what `scatterlab models` lists, what material
-// descriptions are validated against and what the tests and the docs iterate (docs/design.md,
-// "Material descriptions").
+// descriptions are validated against, and what a test that covers every model iterates
+// (docs/design.md, "Material descriptions").
 #pragma once
 
 #include <span>
