@@ -10,8 +10,10 @@ namespace {
 // that the light's own surface does not count as an occluder; far above double round-off.
 constexpr double ShadowRayShortening = 1e-7;
 
-// Next-event estimation at one vertex: one light sample, its contribution f L |cos| / pdf,
-// weighted against BSDF sampling by the power heuristic (Mis) or in full (LightOnly).
+constexpr LobeFlags NonDelta = LobeFlags::Diffuse | LobeFlags::Glossy;
+
+}  // namespace
+
 Rgb directLighting(const Scene& scene, const SurfaceInteraction& hit, const Bsdf& bsdf, const Vec3d& wi,
                    SampleStream& random, Estimator estimator, LightSet lightSet) {
   const double uSelect = random.next();
@@ -35,10 +37,6 @@ Rgb directLighting(const Scene& scene, const SurfaceInteraction& hit, const Bsdf
                             : powerHeuristic(light->pdf, bsdf.pdf(wi, light->direction));
   return f * light->radiance * (cosine * weight / light->pdf);
 }
-
-constexpr LobeFlags NonDelta = LobeFlags::Diffuse | LobeFlags::Glossy;
-
-}  // namespace
 
 PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random,
                      const IntegratorSettings& settings) {

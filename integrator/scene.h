@@ -36,6 +36,10 @@ struct SurfaceMaterial {
 
 // One kind of light, as next-event estimation chooses among them.
 enum class LightKind { Environment, Sphere, Sun };
+struct LightRef {
+  LightKind kind;
+  int index;  // into Scene::sphereLights() or Scene::suns(); 0 for the environment
+};
 
 // Which lights next-event estimation samples. `All` of them (for the light-only estimator),
 // or those worth sampling under MIS: there a constant environment is left to BSDF sampling
@@ -75,6 +79,8 @@ class Scene {
   const std::vector<SphereLight>& sphereLights() const { return sphereLights_; }
   const std::vector<SunLight>& suns() const { return suns_; }
   int shapeCount() const { return int(shapes_.size()); }
+  // True when a subsurface material is in the scene (only the path tracer renders them).
+  bool hasSubsurface() const { return !subsurfaces_.empty(); }
 
   // The nearest surface hit by `ray` in (0, tMax).
   std::optional<SurfaceInteraction> intersect(const Ray& ray, double tMax = Infinity) const;
@@ -85,6 +91,19 @@ class Scene {
   double intersectShape(int shape, const Ray& ray, double tMin, double tMax) const;
   // The geometry of shape `shape` at `point` (on it).
   SurfaceGeometry shapeGeometry(int shape, const Vec3d& point) const;
+
+  // The lights of a set, in the order next-event estimation numbers them.
+  const std::vector<LightRef>& lights(LightSet set = LightSet::All) const {
+    return set == LightSet::All ? lights_ : misLights_;
+  }
+  // The position of a light in lights(LightSet::All), or -1.
+  int lightIndex(LightKind kind, int index) const;
+  // A sphere holding every shape of finite size (the spheres, lights included); the unit
+  // sphere at the origin when there is none. Light from infinity is aimed at it.
+  Sphere finiteBounds() const;
+  // A ray along the whole line through `point` in `direction`, starting before the line
+  // meets any surface (an infinite plane included): light arriving from infinity.
+  Ray rayFromInfinity(const Vec3d& point, const Vec3d& direction) const;
 
   // ---- Lights, for next-event estimation: one light of the set chosen uniformly, then sampled.
   int lightCount(LightSet set = LightSet::All) const { return int(lights(set).size()); }
@@ -133,14 +152,6 @@ class Scene {
     bool isSphere;
     int index;
   };
-  struct LightRef {
-    LightKind kind;
-    int index;
-  };
-
-  const std::vector<LightRef>& lights(LightSet set) const {
-    return set == LightSet::All ? lights_ : misLights_;
-  }
   int addShape(bool isSphere, int index);
   const BsdfModel* modelAt(int material, const Vec2d& uv) const;
   void checkMaterial(int material) const;
