@@ -157,7 +157,9 @@ TEST_P(Caustic, EstimatorsAgreeWithThePathTracersReference) {
   const Scene scene = causticScene();
   const std::vector<bool> region = causticRegion(scene);
   const int pixels = int(std::count(region.begin(), region.end(), true));
-  ASSERT_GE(pixels, 40);
+  // The disk of radius 0.35 seen at 27 degrees elevation through 12 degrees of view covers about
+  // 9 x 4 pixels of the 16 x 12; fewer would mean the camera or the light moved off the caustic.
+  ASSERT_GE(pixels, 24);
 
   const RegionMean reference = regionMean(renderWith(scene, IntegratorKind::Path, 8192, 1), region);
   const RegionMean path = regionMean(renderWith(scene, IntegratorKind::Path, 256, 2), region);
