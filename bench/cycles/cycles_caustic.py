@@ -79,34 +79,32 @@ def region_mask(width, height):
     return mask
 
 
+def node_material(name, shader, inputs, **properties):
+    """A material of one shader node (type `shader`) with `inputs` set, into the output."""
+    material = bpy.data.materials.new(name)
+    material.use_nodes = True
+    nt = material.node_tree
+    for n in list(nt.nodes):
+        nt.nodes.remove(n)
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    node = nt.nodes.new(shader)
+    for key, value in properties.items():
+        setattr(node, key, value)
+    for key, value in inputs.items():
+        node.inputs[key].default_value = value
+    nt.links.new(node.outputs[0], out.inputs["Surface"])
+    return material
+
+
 def build_scene(a):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     s = bpy.context.scene
-    glass = bpy.data.materials.new("glass")
-    glass.use_nodes = True
-    nt = glass.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    b = nt.nodes.new("ShaderNodeBsdfGlass")
-    b.distribution = "SHARP"
-    b.inputs["Color"].default_value = (1, 1, 1, 1)
-    b.inputs["IOR"].default_value = 1.5
-    nt.links.new(b.outputs[0], out.inputs["Surface"])
+    glass = node_material("glass", "ShaderNodeBsdfGlass", {"Color": (1, 1, 1, 1), "IOR": 1.5},
+                          distribution="SHARP")
     bpy.ops.mesh.primitive_uv_sphere_add(segments=256, ring_count=128, radius=1.0, location=(0, 0, 0))
     bpy.ops.object.shade_smooth()
     bpy.context.active_object.data.materials.append(glass)
-
-    grey = bpy.data.materials.new("grey")
-    grey.use_nodes = True
-    nt = grey.node_tree
-    for n in list(nt.nodes):
-        nt.nodes.remove(n)
-    out = nt.nodes.new("ShaderNodeOutputMaterial")
-    d = nt.nodes.new("ShaderNodeBsdfDiffuse")
-    d.inputs["Color"].default_value = (0.5, 0.5, 0.5, 1)
-    d.inputs["Roughness"].default_value = 0.0
-    nt.links.new(d.outputs[0], out.inputs["Surface"])
+    grey = node_material("grey", "ShaderNodeBsdfDiffuse", {"Color": (0.5, 0.5, 0.5, 1), "Roughness": 0.0})
     bpy.ops.mesh.primitive_plane_add(size=200.0, location=(0, 0, -1))
     bpy.context.active_object.data.materials.append(grey)
 
