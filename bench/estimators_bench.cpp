@@ -1,4 +1,5 @@
-// The four estimators (integrator/render.h) on whole renders, one thread: path vertices per
+// The four estimators (integrator/render.h) on whole renders, one thread (a TBB arena of one
+// worker, which need not be the calling thread: rates are per wall-clock second): path vertices per
 // second (surface hits of camera and light paths; shadow rays not counted) on the preview
 // scene for a diffuse and a glass sphere, and the time each needs to bring the caustic of the
 // caustic scene to 1% relative standard error (its close-up camera, causticCloseUp: every
@@ -46,7 +47,8 @@ void EstimatorVertices(benchmark::State& state) {
 BENCHMARK(EstimatorVertices)
     ->ArgNames({"integrator", "glass"})
     ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})
-    ->Unit(benchmark::kMillisecond);
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The caustic's close-up, 16 x 12, under the sphere light alone: seconds to 1% relative error
 // of the image's mean (every pixel on the caustic's ground; a few show the sphere's edge).
@@ -73,7 +75,11 @@ void CausticTimeToOnePercent(benchmark::State& state) {
   state.SetLabel(toString(kind));
   state.counters["seconds_to_1%"] = seconds * relativeVariance / double(runs * runs) / 1e-4;
 }
-BENCHMARK(CausticTimeToOnePercent)->ArgName("integrator")->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(CausticTimeToOnePercent)
+    ->ArgName("integrator")
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace scatterlab
