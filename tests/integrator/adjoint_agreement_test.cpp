@@ -190,11 +190,12 @@ template <typename Include> PairResult comparePair(const std::string& name, cons
 //       whether importance mode leaves the 1/eta^2 out.
 //
 // Besides, which estimator converges fastest on the material: per estimator, the seconds its
-// render took times the mean over pixels of the pixel's relative variance (variance / mean^2):
-// the time it would need to bring a typical pixel to 1% relative standard error is that / 1e-4
-// (variance falls as 1 / samples, time grows with them). Over the pixels where the path and
-// light pilots are reliable and, for a model with a delta lobe (which light tracing cannot join
-// to the eye), the ground only.
+// render took times the relative variance of a typical pixel, the mean over pixels of the
+// pixel's variance over the square of the mean over pixels of its value (a pixel's own value
+// can be ~0): the time it would need to bring a typical pixel to 1% relative standard error is
+// that / 1e-4 (variance falls as 1 / samples, time grows with them). Over the pixels where the
+// path and light pilots are reliable and, for a model with a delta lobe (which light tracing
+// cannot join to the eye), the ground only; the green channel.
 struct ConvergenceSpeed {
   double path = 0.0, light = 0.0, bdpt = 0.0;  // seconds to 1% relative error per pixel
   int pixels = 0;
@@ -211,21 +212,20 @@ struct Comparison {
 ConvergenceSpeed convergenceSpeed(const PilotedRender& path, const RenderResult& bdpt,
                                   const PilotedRender& light, const std::function<bool(int, int)>& include) {
   ConvergenceSpeed out;
-  double sums[3] = {0, 0, 0};
   const RenderResult* renders[3] = {&path.render, &light.render, &bdpt};
+  double value[3] = {0, 0, 0}, variance[3] = {0, 0, 0};
   for (int y = 0; y < Height; ++y)
     for (int x = 0; x < Width; ++x) {
       if (!include(x, y) || !path.reliable(x, y, 1) || !light.reliable(x, y, 1)) continue;
-      bool positive = true;
-      for (const RenderResult* r : renders) positive &= r->color.pixel(x, y)[1] > 0;
-      if (!positive) continue;
-      for (int i = 0; i < 3; ++i)
-        sums[i] += renders[i]->variance.pixel(x, y)[1] / sqr(renders[i]->color.pixel(x, y)[1]);
+      for (int i = 0; i < 3; ++i) {
+        value[i] += renders[i]->color.pixel(x, y)[1];
+        variance[i] += renders[i]->variance.pixel(x, y)[1];
+      }
       ++out.pixels;
     }
   if (out.pixels == 0) return out;
   const auto toOnePercent = [&](int i) {
-    return renders[i]->statistics.seconds * sums[i] / out.pixels / 1e-4;
+    return renders[i]->statistics.seconds * (variance[i] / out.pixels) / sqr(value[i] / out.pixels) / 1e-4;
   };
   out.path = toOnePercent(0);
   out.light = toOnePercent(1);
