@@ -49,7 +49,7 @@ struct RenderResult {
   RenderStatistics statistics;
 };
 
-// `progress` (may be empty) hears the fraction of tiles done, from worker threads. Settings
+// `progress` (may be empty) hears the fraction of pixels done, from worker threads. Settings
 // outside the limits above, or spp < 1, throw std::invalid_argument.
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const std::function<void(double)>& progress = {});
