@@ -22,9 +22,10 @@
 #include "app/progress.h"
 #include "app/showcase.h"
 #include "app/staged_outputs.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/chi_square_images.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
@@ -35,7 +36,8 @@ namespace {
 
 using nlohmann::json;
 
-// docs/validation.md's negative control: sample from a roughness 10% off the one pdf() uses.
+// The roughness-mismatch negative control (docs/validation.md, "Negative controls"): sample from a
+// roughness 10% off the one pdf() uses.
 constexpr double RoughnessMismatchFactor = 1.1;
 
 constexpr uint64_t MinSamples = 1000;

@@ -24,11 +24,11 @@
 #include "app/shape_factor_command.h"
 #include "app/subcommand_names.h"
 #include "app/synth_command.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
 #include "materials/core/quoted.h"
 #include "materials/core/temporary_files.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 

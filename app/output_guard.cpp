@@ -6,7 +6,8 @@
 #include <utility>
 
 #include "app/exit_code.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/parameter_spec.h"
 #include "materials/core/quoted.h"
 
 namespace scatterlab {

@@ -21,11 +21,12 @@
 #include "app/progress.h"
 #include "app/staged_outputs.h"
 #include "app/table_cache.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/quoted.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

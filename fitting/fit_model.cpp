@@ -8,6 +8,8 @@
 #include "materials/bsdf/metals.h"
 #include "materials/core/json_text.h"
 #include "materials/core/quoted.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::fitting {
 

@@ -6,9 +6,9 @@
 
 #include "app/check_command.h"
 #include "app/lab/html.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/subsurface_check.h"
 

@@ -5,10 +5,11 @@
 #include "app/json_output.h"
 #include "app/lab/report_page.h"
 #include "app/lab/staged_directory.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/quoted.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/chi_square_images.h"
 
 namespace scatterlab {

@@ -8,7 +8,8 @@
 #include <string_view>
 
 #include "fuzz/harness/harness.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/json_text.h"
 #include "materials/core/math.h"

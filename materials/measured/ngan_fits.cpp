@@ -7,9 +7,9 @@
 #include <optional>
 #include <sstream>
 
-#include "materials/bsdf/registry.h"
 #include "materials/core/bounded_file.h"
 #include "materials/core/quoted.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 

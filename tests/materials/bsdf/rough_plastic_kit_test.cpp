@@ -18,7 +18,7 @@ struct PlasticCase {
 };
 
 // Appended piece by piece: a chain of + here trips GCC 12's -Wrestrict (a false positive, GCC
-// bug 105329; registry.cpp's inQuotes does the same).
+// bug 105329; materials/registry/parameter_spec.cpp's inQuotes does the same).
 std::string name(const PlasticCase& c) {
   const auto n = catalog_suite::number;
   std::string out = c.type == MicrofacetType::Ggx ? "Ggx" : "Beckmann";
@@ -77,7 +77,7 @@ TEST(RoughPlasticKitSmoke, ColouredGgxPassesAt85Degrees) {
 }
 [[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
-// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1).
+// The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls").
 struct ControlCase {
   const char* name;
   nlohmann::json material;

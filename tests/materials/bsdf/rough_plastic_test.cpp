@@ -10,10 +10,11 @@
 #include "fixed_pairs.h"
 #include "materials/bsdf/diffuse_fresnel.h"
 #include "materials/bsdf/microfacet_albedo.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bsdf/rough_plastic.h"
 #include "materials/core/quadrature.h"
 #include "materials/core/rng.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {
@@ -75,7 +76,7 @@ TEST(DiffuseFresnel, TransmittancesFromTheTwoSidesObeyTheEtendueIdentity) {
   }
 }
 
-// Egan & Hilgeman's fit (docs/references.md, as Jensen et al. 2001 use it for the internal
+// Egan & Hilgeman's fit (docs/references.md, "Fresnel"; as Jensen et al. 2001 use it for the internal
 // reflectance) agrees to its accuracy: 0.52% at eta 1.1, less above.
 TEST(DiffuseFresnel, InternalReflectanceAgreesWithEganHilgemansFit) {
   for (double eta : {1.1, 1.3, 1.5, 2.0, 2.4}) {
