@@ -6,9 +6,9 @@
 #include <utility>
 
 #include "app/exit_code.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/parameter_spec.h"
-#include "materials/core/quoted.h"
 
 namespace scatterlab {
 

@@ -8,11 +8,11 @@
 #include <string_view>
 
 #include "fuzz/harness/harness.h"
-#include "materials/registry/model_list.h"
-#include "materials/registry/spec_validation.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/json_text.h"
 #include "materials/core/math.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::fuzz {
 
