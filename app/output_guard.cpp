@@ -7,6 +7,7 @@
 
 #include "app/exit_code.h"
 #include "materials/core/quoted.h"
+#include "materials/registry/material_file.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/parameter_spec.h"
 
