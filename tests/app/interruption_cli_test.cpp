@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/measured_bundle.h"
 #include "cli_runner.h"
 
 namespace scatterlab {
@@ -81,6 +82,23 @@ TEST(Interruption, SynthAndFitRemoveTheirTemporaries) {
   EXPECT_EQ(run.exitCode, 128 + SIGINT) << describe(run);
   EXPECT_EQ(readFile(fitted), "old fit");
   EXPECT_TRUE(entriesWith(dir, ".tmp-").empty());
+}
+
+// The bundle writes its tables one after another: interrupted while writing the first, it leaves
+// no temporary, and a table of an earlier run (another of the bundle's names) as it was.
+TEST(Interruption, SynthBundleRemovesItsTemporaries) {
+  const fs::path dir = uniquePath("interrupt-bundle");
+  const auto bundle = measuredBundle();
+  ASSERT_GE(bundle.size(), 2u);
+  const fs::path first = dir / (std::string(bundle[0].name) + ".binary");
+  const fs::path earlier = writeText(dir / (std::string(bundle[1].name) + ".binary"), "earlier table");
+  const ProcessResult run = interruptOnce(
+      {"synth", "--bundle", dir.string(), "--threads", "1"},
+      [&](pid_t pid) { return fs::path(first.string() + ".tmp-" + std::to_string(pid)); }, SIGINT);
+  EXPECT_EQ(run.exitCode, 128 + SIGINT) << describe(run);
+  EXPECT_TRUE(entriesWith(dir, ".tmp-").empty());
+  EXPECT_FALSE(fs::exists(first));
+  EXPECT_EQ(readFile(earlier), "earlier table");
 }
 
 TEST(Interruption, CheckImagesLeaveTheDirectoryAsItWas) {

@@ -94,5 +94,50 @@ TEST(Messages, ATableOfHugeValuesIsRefused) {
   expectBadInput({"fit", table.string(), "--model", "lambertian", "--metric", "l2"}, {"exceed"});
 }
 
+// Material files named like the report's own entries (index.html.json is the material
+// "index.html") get folders of their own: the report's page, record and assets stay intact.
+TEST(LabNames, InputsNamedLikeTheReportsOwnFilesDoNotBreakIt) {
+  const fs::path dir = uniquePath("lab-names");
+  fs::create_directories(dir / "inputs");
+  std::vector<std::string> args{"lab"};
+  for (const char* name : {"index.html.json", "report.json.json", "assets.json", "manifest.json.json"}) {
+    std::ofstream(dir / "inputs" / name) << R"({"type":"lambertian","albedo":0.5})";
+    args.push_back((dir / "inputs" / name).string());
+  }
+  const fs::path out = dir / "report";
+  for (const char* option : {"--quick", "--out"}) args.push_back(option);
+  args.push_back(out.string());
+  const ProcessResult run = runScatterlab(args);
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  EXPECT_TRUE(fs::is_regular_file(out / "index.html"));
+  EXPECT_TRUE(fs::is_regular_file(out / "report.json"));
+  EXPECT_TRUE(fs::is_regular_file(out / "manifest.json"));
+  EXPECT_TRUE(fs::is_directory(out / "assets"));
+  int materialFolders = 0;
+  for (const auto& entry : fs::directory_iterator(out))
+    materialFolders += int(entry.is_directory() && fs::is_regular_file(entry.path() / "data.json"));
+  EXPECT_EQ(materialFolders, 4);
+}
+
+// A subsurface medium whose profile would overflow or vanish is refused naming the key the user
+// gave, never printed as nan or inf with exit 0 (and never an internal option's name).
+TEST(Messages, ProfileValuesThatWouldNotBeFiniteAreRefused) {
+  expectBadInput({"profile", R"({"type":"subsurface","sigma_s":1,"sigma_a":0.1,"scale":1e308})"},
+                 {"material key \"scale\"", "allowed"});
+  expectBadInput({"profile", R"({"type":"subsurface","sigma_s":1e-300,"sigma_a":1e-300})"},
+                 {"material key \"sigma_", "allowed"});
+  for (
+      const auto& args : std::vector<std::vector<std::string>>{
+          {"profile", R"({"type":"subsurface","sigma_s":1,"sigma_a":0.1,"scale":1e308})"},
+          {"profile", R"({"type":"subsurface","sigma_s":1e-300,"sigma_a":1e-300})"},
+          {"profile",
+           R"({"type":"subsurface","profile":"burley","sigma_s":1,"sigma_a":0,"burley_fit":"searchlight-dmfp"})"}}) {
+    const ProcessResult run = runScatterlab(args);
+    EXPECT_EQ(run.err.find("--min-radius"), std::string::npos) << run.err;
+    EXPECT_EQ(run.out.find("nan"), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find("inf"), std::string::npos) << run.out;
+  }
+}
+
 }  // namespace
 }  // namespace scatterlab
