@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "materials/bsdf/metals.h"
+#include "materials/core/json_text.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/spec_validation.h"
 
@@ -146,12 +148,10 @@ std::string refusal(const std::string& type) {
   return "it is not a model of the registry";
 }
 
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
-
 std::string allowedModels() {
   std::string out = "one of ";
   const auto names = fittableModels();
-  for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + quoted(names[i]);
+  for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + inQuotes(names[i]);
   return out + ", joined by '+'";
 }
 
@@ -192,12 +192,12 @@ std::string trimmed(const std::string& text) {
 
 json parseComponentText(const std::string& text, const std::string& spec) {
   if (text.empty())
-    throw MaterialError("model " + quoted(spec) + ": an empty component; allowed: " + allowedModels());
+    throw MaterialError("model " + inQuotes(spec) + ": an empty component; allowed: " + allowedModels());
   if (text.front() != '{') return json{{"type", text}};
   try {
-    return json::parse(text);
-  } catch (const json::parse_error& error) {
-    throw MaterialError("model component " + quoted(text) + ": not valid JSON (" + error.what() +
+    return parseJsonText(text, "model component");
+  } catch (const JsonTextError& error) {
+    throw MaterialError("model component " + inQuotes(text) + ": not valid JSON (" + error.what() +
                         "); allowed: a registry type or a JSON object such as {\"type\": \"conductor\"}");
   }
 }
@@ -236,13 +236,13 @@ std::vector<json> parseModelSpec(const std::string& spec, int lobes) {
   if (!text.empty() && text.front() == '[') {
     json array;
     try {
-      array = json::parse(text);
-    } catch (const json::parse_error& error) {
-      throw MaterialError("model " + quoted(text) + ": not valid JSON (" + error.what() +
+      array = parseJsonText(text, "model");
+    } catch (const JsonTextError& error) {
+      throw MaterialError("model " + inQuotes(text) + ": not valid JSON (" + error.what() +
                           "); allowed: an array of material objects, or types joined by '+'");
     }
     if (array.empty())
-      throw MaterialError("model " + quoted(text) + ": no components; allowed: " + allowedModels());
+      throw MaterialError("model " + inQuotes(text) + ": no components; allowed: " + allowedModels());
     for (const json& part : array) components.push_back(part);
   } else {
     for (const std::string& part : splitTopLevel(text))
@@ -274,7 +274,7 @@ FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape)
     const LobeInfo& info = *findLobeInfo(comp.type);
     if (info.hasRest && components_.size() > 1)
       throw MaterialError(
-          "model component " + quoted(comp.label) +
+          "model component " + inQuotes(comp.label) +
           ": a model with no linear scale of its whole value (eon, disney, ashikhmin-shirley) can "
           "only be fitted alone; allowed: that model by itself, or models with an albedo joined by '+'");
   }
@@ -288,9 +288,9 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   const LobeInfo* info = findLobeInfo(type);
   if (!info) {
     if (!findMaterialModel(type))
-      throw MaterialError("model component " + quoted(type) +
+      throw MaterialError("model component " + inQuotes(type) +
                           " is not a known model; allowed: " + allowedModels());
-    throw MaterialError("model component " + quoted(type) + " cannot be fitted: " + refusal(type) +
+    throw MaterialError("model component " + inQuotes(type) + " cannot be fitted: " + refusal(type) +
                         "; allowed: " + allowedModels());
   }
   json given = description;
@@ -305,10 +305,10 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   try {
     completed = completeMaterial(given);
   } catch (const MaterialError& error) {
-    throw MaterialError("model component " + quoted(label) + ": " + error.what());
+    throw MaterialError("model component " + inQuotes(label) + ": " + error.what());
   }
   if (type == "conductor" && completed.value("multiscatter", "none") != "none")
-    throw MaterialError("model component " + quoted(label) + ": \"multiscatter\": \"" +
+    throw MaterialError("model component " + inQuotes(label) + ": \"multiscatter\": \"" +
                         completed["multiscatter"].get<std::string>() +
                         "\" cannot be fitted (its compensation reads albedo tables); allowed: \"none\"");
   if (type == "conductor" && completed.contains("metal")) {

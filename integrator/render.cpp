@@ -105,13 +105,16 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   const int tilesX = (width + TileSize - 1) / TileSize, tilesY = (height + TileSize - 1) / TileSize;
   const int tileCount = tilesX * tilesY;
   std::atomic<uint64_t> vertices{0}, nonFinite{0};
-  std::atomic<int> tilesDone{0};
+  // Progress counts pixels, reported after each row of a tile: with many samples per pixel a
+  // tile takes minutes, and a log should still hear from the run every few seconds.
+  std::atomic<uint64_t> pixelsDone{0};
+  const double pixelCount = double(width) * double(height);
 
   const auto renderTile = [&](int tile) {
     const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
     const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
     uint64_t tileVertices = 0, tileNonFinite = 0;
-    for (int y = y0; y < y1; ++y)
+    for (int y = y0; y < y1; ++y) {
       for (int x = x0; x < x1; ++x) {
         const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
         PixelAccumulator acc;
@@ -134,10 +137,10 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
         if (settings.normalLayer) result.normal.setRgb(x, y, acc.normal / double(spp));
         if (settings.varianceLayer) result.variance.setRgb(x, y, acc.varianceOfMean());
       }
+      if (progress) progress(double(pixelsDone += uint64_t(x1 - x0)) / pixelCount);
+    }
     vertices += tileVertices;
     nonFinite += tileNonFinite;
-    const int done = ++tilesDone;
-    if (progress) progress(double(done) / tileCount);
   };
 
   const auto start = std::chrono::steady_clock::now();

@@ -167,10 +167,15 @@ MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& setting
       options.progress = [&, i](const std::string& stage, double fraction) {
         progress("fit " + spec + " " + stage, (double(i) + fraction) / double(settings.fitFamilies.size()));
       };
-    if (!samples.empty()) f.result = fitBrdf(*f.model, samples, options);
-    f.written = writeMaterial(f.model->fittedParts(f.result.x.data()));
-    f.verdict = samples.empty() ? FitVerdict{false, {"the table has no usable cells"}}
-                                : judgeFit(f.result, f.written, DefaultMaxRelativeError);
+    if (samples.empty()) {
+      // Nothing to fit: no parameters to write (fittedParts would read them).
+      f.written = {std::nullopt, "the table has no usable cells"};
+      f.verdict = FitVerdict{false, {"the table has no usable cells"}};
+    } else {
+      f.result = fitBrdf(*f.model, samples, options);
+      f.written = writeMaterial(f.model->fittedParts(f.result.x.data()));
+      f.verdict = judgeFit(f.result, f.written, DefaultMaxRelativeError);
+    }
     fits.families.push_back(std::move(f));
   }
   return fits;

@@ -21,6 +21,7 @@
 #include "app/lab/staged_directory.h"
 #include "app/lab/subsurface_section.h"
 #include "app/option_values.h"
+#include "app/output_guard.h"
 #include "app/progress.h"
 
 namespace scatterlab {
@@ -175,7 +176,7 @@ void printSummary(const std::vector<MaterialReport>& reports, const fs::path& in
                       {"passed", allPassed},
                       {"materials", materials},
                       {"timings", timer.toJson()}}
-                     .dump(2)
+                     .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
     return;
   }
@@ -218,16 +219,24 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
 int runLabCommand(const LabCommandOptions& options) {
   // Every input is checked before the first file is written.
   std::vector<LabMaterial> materials;
-  for (const std::string& argument : options.materials) materials.push_back(loadLabMaterial(argument));
+  std::vector<InputPath> inputs;
+  for (const std::string& argument : options.materials) {
+    materials.push_back(loadLabMaterial(argument));
+    addMaterialInputs(inputs, argument, materials.back().description);
+  }
   makeNamesUnique(materials);
-  const std::vector<LabEnvironment> environments =
-      loadLabEnvironments(options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments);
-  StagedDirectory staged(options.out, ReportMarkerFile, ReportGenerator, "--out");
+  const std::vector<std::string> environmentFiles =
+      options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments;
+  const std::vector<LabEnvironment> environments = loadLabEnvironments(environmentFiles);
+  for (const std::string& file : environmentFiles) inputs.push_back({"environment map (--env)", file});
+  if (options.materials.empty())
+    if (const auto cache = showcaseCacheDirectory()) inputs.push_back({"showcase's table cache", *cache});
+  StagedDirectory staged(options.out, ReportGenerator, "--out", inputs);
 
   const LabSettings settings =
       options.quick ? LabSettings::quickMode(options.seed) : LabSettings::fullMode(options.seed);
   ProgressLine progress;
-  PhaseTimer timer(true, [&progress] { progress.clear(); });
+  PhaseTimer timer(!progressIsQuiet(), [&progress] { progress.clear(); });
   const auto start = std::chrono::steady_clock::now();
   if (materials.empty())
     materials = showcaseLabMaterials(staged.path() / "scratch", timer, progress.callback("showcase"));
@@ -252,9 +261,10 @@ int runLabCommand(const LabCommandOptions& options) {
   timer.time("write", "", [&] { writeReport(staged.path(), run, reports); });
   staged.commit();
   progress.clear();
-  std::fprintf(stderr, "lab: total %.2f s; open %s\n",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-               (staged.target() / "index.html").c_str());
+  if (!progressIsQuiet())
+    std::fprintf(stderr, "lab: total %.2f s; open %s\n",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                 (staged.target() / "index.html").c_str());
   printSummary(reports, staged.target() / "index.html", options.json, timer);
   bool allPassed = true;
   for (const MaterialReport& r : reports) allPassed = allPassed && r.passed;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -174,9 +175,12 @@ TEST(FitCli, BadInputNamesTheOptionFileOrValueAndWritesNothing) {
       {"absent.binary", "not found", "allowed"});
   expectBadInput({"fit", R"({"type":"lambertian","albedo":2})", "--model", "lambertian", "--metric", "ngan"},
                  {"albedo", "out of range"});
-  expectBadInput(
-      {"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", (out / "sub" / "x.json").string()},
-      {"--out", "does not exist"});
+  // Missing parents are created (as everywhere); a file in their place is found before the fit.
+  const fs::path blocker = uniquePath("blocker");
+  std::ofstream(blocker) << "a file";
+  expectBadInput({"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out",
+                  (blocker / "sub" / "x.json").string()},
+                 {"--out", "cannot create the directory"});
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -311,9 +311,12 @@ TEST_F(RenderCliBadInput, EnvironmentMaps) {
 }
 
 TEST_F(RenderCliBadInput, Outputs) {
-  const fs::path nowhere = uniquePath("no-such-dir") / "image";
-  expectBadInput({"render", WhiteLambertian, "--out", nowhere.string()}, {"--out", "does not exist"},
-                 nowhere);
+  // Missing parents are created (as everywhere); a file in their place is found before rendering.
+  const fs::path blocker = uniquePath("blocker");
+  std::ofstream(blocker) << "a file";
+  const fs::path nowhere = blocker / "sub" / "image";
+  expectBadInput({"render", WhiteLambertian, "--out", nowhere.string()},
+                 {"--out", "cannot create the directory"}, nowhere);
   // PREFIX.exr occupied by a directory: rejected before rendering.
   const fs::path occupied = uniquePath("occupied");
   fs::create_directories(occupied.string() + ".exr");
