@@ -14,12 +14,14 @@
 
 #include "app/exit_code.h"
 #include "app/option_values.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/showcase.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
+#include "validation/check_bsdf.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
 
@@ -106,11 +108,11 @@ CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOpti
                                                   subsurfaceCheckOptions(kit), progress));
     return report;
   }
-  CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
-  if (negativeControls)
-    report.append(runNegativeControls(*material.model, material.roughnessMismatchSampler.get(),
-                                      material.label, kit, progress));
-  return report;
+  return checkBsdf(*material.model, {.kit = kit,
+                                     .negativeControls = negativeControls,
+                                     .roughnessMismatchSampler = material.roughnessMismatchSampler.get(),
+                                     .label = material.label,
+                                     .progress = progress});
 }
 
 json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit) {
@@ -155,8 +157,7 @@ void printText(const std::vector<MaterialUnderTest>& materials, const CheckRepor
       std::cout << "    " << *missing << " of " << merl::CellCount
                 << " cells missing in the file, filled from the nearest measured cell along theta_d\n";
   }
-  std::cout << formatTable(report);
-  std::cout << "verdict: " << (report.passed() ? "PASS" : "FAIL") << "\n";
+  std::cout << formatVerdict(report);
 }
 
 }  // namespace
@@ -235,6 +236,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
                     "Also run deliberately wrong samplers, which the kit must reject");
   command->add_flag("--json", options.json,
                     "Print one JSON document: completed materials, every row, the verdict");
+  addPluginOption(*command);
   return command;
 }
 

@@ -10,6 +10,7 @@
 #include "app/generate_table_command.h"
 #include "app/lab/lab_command.h"
 #include "app/models_command.h"
+#include "app/plugin_option.h"
 #include "app/profile_command.h"
 #include "app/render_command.h"
 #include "app/shape_factor_command.h"
@@ -66,6 +67,7 @@ int runCli(int argc, char** argv) {
 
   // Nothing may escape: every failure is one message and an exit code (exit_code.h).
   try {
+    loadPluginsFromEnvironment();
     app.parse(argc, argv);
     if (*models) return runModelsCommand(modelsOptions);
     if (*check) return runCheckCommand(checkOptions);

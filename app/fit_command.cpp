@@ -11,6 +11,7 @@
 #include "app/exit_code.h"
 #include "app/fit_verdict.h"
 #include "app/option_values.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/synth_command.h"
 #include "fitting/brdf_fit.h"
@@ -230,6 +231,7 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
                    "Write the fitted material (registry JSON) here, atomically, if the fit is good")
       ->type_name("FILE");
   command->add_flag("--json", options.json, "Print the whole report as JSON");
+  addPluginOption(*command);
   return command;
 }
 
@@ -251,6 +253,9 @@ int runFitCommand(const FitCommandOptions& options) {
   FitOptions fitOptions = fitOptionsOf(options);
   if (fitOptions.robust == RobustLoss::None && options.robustScale)
     throw InputError("--robust-scale: only applies with --robust huber, cauchy or soft-l1");
+
+  // A plugin model without a fit kernel is differentiated numerically: say so before the work.
+  for (const std::string& note : model->derivativeNotes()) std::cerr << "scatterlab: note: " << note << "\n";
 
   ProgressLine progress;
   const LoadedData data = loadData(options.data, options.threads, progress);
@@ -277,6 +282,7 @@ int runFitCommand(const FitCommandOptions& options) {
                 {"components", components},
                 {"lobes", options.lobes},
                 {"per_channel", options.perChannel},
+                {"derivative_notes", model->derivativeNotes()},
                 {"fit", toJson(result, *model, fitOptions)},
                 {"material", written.material ? *written.material : json()},
                 {"material_problem", written.problem},

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/exit_code.h"
+#include "app/plugin_option.h"
 #include "materials/registry/model_list.h"
 
 namespace scatterlab {
@@ -46,6 +47,7 @@ std::string formatAlternatives(const MaterialModel& model) {
 std::string formatModel(const MaterialModel& model) {
   std::string out = model.type + ": " + model.description + "\n";
   out += "  citation: " + model.citation + "\n";
+  if (!model.plugin.empty()) out += "  plugin: " + model.plugin + "\n";
   std::vector<TableRow> rows{{"parameter", "kind", "default", "allowed", "description"}};
   for (const ParameterSpec& spec : model.parameters)
     rows.push_back(
@@ -68,6 +70,7 @@ CLI::App* addModelsCommand(CLI::App& app, ModelsCommandOptions& options) {
   CLI::App* command =
       app.add_subcommand("models", "List every material model with its parameters, ranges and defaults");
   command->add_flag("--json", options.json, "Print the catalog as JSON");
+  addPluginOption(*command);
   return command;
 }
 

@@ -12,6 +12,7 @@
 
 #include "app/exit_code.h"
 #include "app/option_values.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "integrator/contact_sheet.h"
 #include "integrator/environment_map_file.h"
@@ -259,6 +260,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->required();
   command->add_flag("--json", options.json,
                     "Print the run (settings, timings, sphere and background means) as JSON");
+  addPluginOption(*command);
   return command;
 }
 
