@@ -4,7 +4,7 @@
 //     scatterlab check  --plugin libexample_phong.so '{"type": "example-phong"}' --negative-controls
 //     scatterlab lab    --plugin libexample_phong.so '{"type": "example-phong", "exponent": 80}'
 //     scatterlab render --plugin libexample_phong.so '{"type": "example-phong"}' --out phong
-//     scatterlab fit    --plugin libexample_phong.so '{"type": "example-phong", "exponent": 80}' \
+//     scatterlab fit    --plugin libexample_phong.so '{"type": "example-phong", "exponent": 80}'
 //                       --model example-phong --metric l2
 //
 // work as for a built-in model: the spec gives the ranges, defaults and error messages.

@@ -35,6 +35,7 @@ using namespace scatterlab;
 #elif defined(BAD_PLUGIN_NO_DEFAULT)
   registrar.addModel(model("no-default-lobe", nullptr));
 #elif defined(BAD_PLUGIN_THROWS)
+  (void)registrar;
   throw std::runtime_error("deliberate failure while registering");
 #else
   registrar.addModel(model("wrong-abi-lobe", 0.5));
