@@ -5,12 +5,15 @@
 // tests/app/plugins/plugins.cmake.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "materials/measured/merl_io.h"
 
 namespace scatterlab {
 namespace {
@@ -34,7 +37,7 @@ double parameter(const json& report, const std::string& name) {
 // ---- A plugin's model in every command ---------------------------------------------------
 
 TEST(PluginCli, EveryCommandThatReadsMaterialsTakesPlugin) {
-  for (const char* command : {"check", "render", "lab", "models", "fit"}) {
+  for (const char* command : {"check", "render", "lab", "models", "fit", "synth"}) {
     const ProcessResult run = runScatterlab({command, "--help"});
     EXPECT_EQ(run.exitCode, 0) << describe(run);
     expectMentions(run.out, {"--plugin", "SCATTERLAB_PLUGIN_PATH"});
@@ -129,6 +132,35 @@ TEST(PluginCli, LabWritesAReportOnThePluginsModel) {
   fs::remove_all(out);
 }
 
+// `synth` evaluates the plugin's model on the MERL grid. The built-in "phong" with kd = 0 is the
+// same formula written independently (materials/bsdf/phong.h), so the two tables agree cell by
+// cell up to rounding: a few ulp of cos alpha, raised to the power 30, stays below 1e-12 relative.
+TEST(PluginCli, SynthTabulatesThePluginsModelAsTheBuiltInPhongWithoutDiffuse) {
+  const fs::path plugin = uniquePath("plugin-phong") += ".binary";
+  const fs::path builtIn = uniquePath("builtin-phong") += ".binary";
+  const ProcessResult run = runScatterlab(
+      {"synth", "--plugin", ExamplePhong, R"({"type": "example-phong"})", "--out", plugin.string()});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  ASSERT_EQ(runScatterlab({"synth", R"({"type": "phong", "kd": 0, "ks": 0.8, "exponent": 30})", "--out",
+                           builtIn.string()})
+                .exitCode,
+            0);
+  const MerlTable fromPlugin = readMerl(plugin), reference = readMerl(builtIn);
+  double largest = 0;
+  size_t disagreeing = 0;
+  for (size_t cell = 0; cell < merl::CellCount; ++cell)
+    for (int channel = 0; channel < 3; ++channel) {
+      const double expected = reference.value(channel, cell);
+      largest = std::max(largest, expected);
+      if (std::abs(fromPlugin.value(channel, cell) - expected) > 1e-12 * std::max(1.0, expected))
+        ++disagreeing;
+    }
+  EXPECT_EQ(disagreeing, 0u);
+  EXPECT_GT(largest, 1.0);  // the lobe's peak, 0.8 * 32 / (2 pi) ~ 4 /sr, is in the table
+  fs::remove(plugin);
+  fs::remove(builtIn);
+}
+
 // Noise-free data tabulated from the model itself: the optimum is the truth, and the solver's
 // tolerances (function and parameter 1e-10, brdf_fit.h) leave it at ~1e-6 relative; 1e-4 leaves
 // room for the numeric derivatives' error in the path taken, not in the optimum.
@@ -199,6 +231,11 @@ TEST(PluginCli, AFileThatIsNotASharedLibraryIsBadInput) {
 TEST(PluginCli, ASharedLibraryThatIsNotAPluginIsBadInput) {
   expectBadInput({"models", "--plugin", SCATTERLAB_PLUGIN_BAD_PLUGIN_NOT_A_PLUGIN},
                  {"is not a scatterlab plugin", "scatterlab_plugin_abi", "SCATTERLAB_PLUGIN"});
+}
+
+TEST(PluginCli, APluginWithoutItsRegistrationEntryPointIsBadInput) {
+  expectBadInput({"models", "--plugin", SCATTERLAB_PLUGIN_BAD_PLUGIN_NO_REGISTER},
+                 {"is not a scatterlab plugin", "no scatterlab_plugin_register symbol", "SCATTERLAB_PLUGIN"});
 }
 
 TEST(PluginCli, APluginBuiltAgainstAnotherScatterlabIsRefused) {

@@ -5,6 +5,7 @@
 //  BAD_PLUGIN_NO_DEFAULT       a parameter of its model has no default
 //  BAD_PLUGIN_THROWS           its registration throws
 //  BAD_PLUGIN_NOT_A_PLUGIN     a shared library without the entry points
+//  BAD_PLUGIN_NO_REGISTER      the right ABI stamp but no registration entry point
 #include <memory>
 #include <stdexcept>
 
@@ -55,6 +56,12 @@ extern "C" __attribute__((visibility("default"))) void scatterlab_plugin_registe
 }
 #elif defined(BAD_PLUGIN_NOT_A_PLUGIN)
 extern "C" __attribute__((visibility("default"))) int not_a_scatterlab_plugin() { return 0; }
+#elif defined(BAD_PLUGIN_NO_REGISTER)
+// Half of what SCATTERLAB_PLUGIN defines: the stamp matches, the registration is missing.
+extern "C" __attribute__((visibility("default"))) const char* scatterlab_plugin_abi() {
+  static const std::string stamp = pluginAbiStamp();
+  return stamp.c_str();
+}
 #else
 SCATTERLAB_PLUGIN(registerModels)
 #endif
