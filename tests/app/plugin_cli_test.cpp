@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "fit_report.h"
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
@@ -26,13 +27,6 @@ const std::string ExamplePhong = SCATTERLAB_PLUGIN_EXAMPLE_PHONG;
 const std::string TestModels = SCATTERLAB_PLUGIN_TEST_PLUGIN_MODELS;
 // A check of well under a second: few samples, a coarse grid, two angles.
 const std::vector<std::string> QuickCheck{"--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"};
-
-double parameter(const json& report, const std::string& name) {
-  for (const json& p : report.at("fit").at("parameters"))
-    if (p.at("name") == name) return p.at("value").get<double>();
-  ADD_FAILURE() << "no parameter " << name;
-  return 0;
-}
 
 // ---- A plugin's model in every command ---------------------------------------------------
 
@@ -173,8 +167,8 @@ TEST(PluginCli, FitRecoversThePluginsParametersWithItsKernel) {
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(run.out);
   EXPECT_TRUE(report.at("derivative_notes").empty());
-  EXPECT_NEAR(parameter(report, "example-phong.exponent") / 80.0, 1.0, RecoveryTolerance);
-  EXPECT_NEAR(parameter(report, "example-phong.ks.b"), 0.3, RecoveryTolerance);
+  EXPECT_NEAR(fittedParameter(report, "example-phong.exponent") / 80.0, 1.0, RecoveryTolerance);
+  EXPECT_NEAR(fittedParameter(report, "example-phong.ks.b"), 0.3, RecoveryTolerance);
   EXPECT_EQ(report.at("material").at("type"), "example-phong");
 }
 
@@ -186,8 +180,8 @@ TEST(PluginCli, FitWithoutAKernelDifferentiatesNumericallyAndSaysSo) {
   expectMentions(run.err, {"note", "numeric derivatives", "registers no fit kernel"});
   const json report = json::parse(run.out);
   EXPECT_EQ(report.at("derivative_notes").size(), 1u);
-  EXPECT_NEAR(parameter(report, "numeric-phong.exponent") / 80.0, 1.0, RecoveryTolerance);
-  EXPECT_NEAR(parameter(report, "numeric-phong.ks.r"), 0.7, RecoveryTolerance);
+  EXPECT_NEAR(fittedParameter(report, "numeric-phong.exponent") / 80.0, 1.0, RecoveryTolerance);
+  EXPECT_NEAR(fittedParameter(report, "numeric-phong.ks.r"), 0.7, RecoveryTolerance);
 }
 
 // ---- A plugin that misbehaves at run time ------------------------------------------------
