@@ -179,12 +179,6 @@ bool isInUnchosenAlternative(const MaterialModel& model, size_t chosen, const st
   return false;
 }
 
-bool isInAnyAlternative(const MaterialModel& model, const std::string& name) {
-  for (const auto& keys : model.alternatives)
-    if (std::find(keys.begin(), keys.end(), name) != keys.end()) return true;
-  return false;
-}
-
 [[noreturn]] void throwSpecError(const MaterialModel& model, const std::string& problem,
                                  const std::string& allowed) {
   throw MaterialError("model " + inQuotes(model.type) + ": " + problem + "; allowed: " + allowed);
@@ -209,12 +203,10 @@ void checkModelSpec(const MaterialModel& model) {
     names.push_back(spec.name);
     if (spec.kind == ParameterKind::Choice && spec.choices.empty())
       throwSpecError(model, parameter + " is a choice without choices", "at least one choice");
-    if (spec.defaultValue.is_null()) {
-      if (!spec.required && !isInAnyAlternative(model, spec.name))
-        throwSpecError(model, parameter + " has no default",
-                       "a default value, or a required parameter, or one of a set of alternatives");
-      continue;
-    }
+    // No default: required, in a set of alternatives, or derived by the build function (the
+    // subsurface model's eta from its medium). A plugin's model has a default for every
+    // parameter (checkPluginModel).
+    if (spec.defaultValue.is_null()) continue;
     try {
       parseValue(spec, spec.defaultValue);
     } catch (const MaterialError& error) {
