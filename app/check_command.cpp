@@ -19,6 +19,7 @@
 #include "app/json_output.h"
 #include "app/option_values.h"
 #include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/showcase.h"
 #include "app/staged_outputs.h"
@@ -27,6 +28,7 @@
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
 #include "validation/chi_square_images.h"
+#include "validation/check_bsdf.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
 
@@ -109,11 +111,11 @@ CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOpti
                                                   subsurfaceCheckOptions(kit), progress));
     return report;
   }
-  CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
-  if (negativeControls)
-    report.append(runNegativeControls(*material.model, material.roughnessMismatchSampler.get(),
-                                      material.label, kit, progress));
-  return report;
+  return checkBsdf(*material.model, {.kit = kit,
+                                     .negativeControls = negativeControls,
+                                     .roughnessMismatchSampler = material.roughnessMismatchSampler.get(),
+                                     .label = material.label,
+                                     .progress = progress});
 }
 
 // `kit` as run; the images are reported where they end up (options), not where they were staged.
@@ -194,8 +196,7 @@ void printText(const std::vector<MaterialUnderTest>& materials, const CheckRepor
       std::cout << "    " << *missing << " of " << merl::CellCount
                 << " cells missing in the file, filled from the nearest measured cell along theta_d\n";
   }
-  std::cout << formatTable(report);
-  std::cout << "verdict: " << (report.passed() ? "PASS" : "FAIL") << "\n";
+  std::cout << formatVerdict(report);
 }
 
 }  // namespace
@@ -275,6 +276,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
                     "Also run deliberately wrong samplers, which the kit must reject");
   command->add_flag("--json", options.json,
                     "Print one JSON document: completed materials, every row, the verdict");
+  addPluginOption(*command);
   return command;
 }
 

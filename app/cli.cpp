@@ -18,6 +18,7 @@
 #include "app/interrupt_cleanup.h"
 #include "app/lab/lab_command.h"
 #include "app/models_command.h"
+#include "app/plugin_option.h"
 #include "app/profile_command.h"
 #include "app/progress.h"
 #include "app/render_command.h"
@@ -149,6 +150,7 @@ int runCli(int argc, char** argv) {
   for (std::string& argument : arguments) protectedArgv.push_back(argument.data());
   const int code = runParsed(app, argc, protectedArgv.data(), [&] {
     setProgressMode(quiet ? ProgressMode::Quiet : ProgressMode::Automatic);
+    loadPluginsFromEnvironment();
     if (*models) return runModelsCommand(modelsOptions);
     if (*check) return runCheckCommand(checkOptions);
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);

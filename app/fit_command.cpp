@@ -14,6 +14,7 @@
 #include "app/json_output.h"
 #include "app/option_values.h"
 #include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/staged_outputs.h"
 #include "app/synth_command.h"
@@ -237,6 +238,7 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
                    "Write the fitted material (registry JSON) here, atomically, if the fit is good")
       ->type_name("FILE");
   command->add_flag("--json", options.json, "Print the whole report as JSON");
+  addPluginOption(*command);
   return command;
 }
 
@@ -266,6 +268,9 @@ int runFitCommand(const FitCommandOptions& options) {
     inputs.push_back({"data file", options.data});
   StagedOutputs outputs(inputs);
   if (!options.out.empty()) outputs.addFile("--out", options.out, "fit.json");
+  // A plugin model without a fit kernel is differentiated numerically: say so before the work.
+  for (const std::string& note : model->derivativeNotes()) std::cerr << "scatterlab: note: " << note << "\n";
+
   ProgressLine progress;
   const LoadedData data = loadData(options.data, options.threads, progress, [&] { outputs.prepare(); });
   const BrdfSamples samples = stratifiedSubset(data.samples, options.samples, options.seed);
@@ -292,6 +297,7 @@ int runFitCommand(const FitCommandOptions& options) {
                 {"components", components},
                 {"lobes", options.lobes},
                 {"per_channel", options.perChannel},
+                {"derivative_notes", model->derivativeNotes()},
                 {"fit", toJson(result, *model, fitOptions)},
                 {"material", written.material ? *written.material : json()},
                 {"material_problem", written.problem},

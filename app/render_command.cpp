@@ -12,6 +12,7 @@
 #include "app/exit_code.h"
 #include "app/option_values.h"
 #include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/staged_outputs.h"
 #include "integrator/contact_sheet.h"
@@ -396,6 +397,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->required();
   command->add_flag("--json", options.json,
                     "Print the run (settings, timings, sphere and background means) as JSON");
+  addPluginOption(*command);
   return command;
 }
 

@@ -18,6 +18,7 @@
 #include "app/measured_bundle.h"
 #include "app/option_values.h"
 #include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/staged_outputs.h"
 #include "app/table_cache.h"
@@ -292,6 +293,7 @@ CLI::App* addSynthCommand(CLI::App& app, SynthCommandOptions& options) {
       ->capture_default_str();
   command->add_flag("--force", options.force, "With --bundle: regenerate files already in the cache");
   command->add_flag("--json", options.json, "Print what was written as JSON");
+  addPluginOption(*command);
   return command;
 }
 

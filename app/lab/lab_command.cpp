@@ -22,6 +22,7 @@
 #include "app/lab/subsurface_section.h"
 #include "app/option_values.h"
 #include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 
 namespace scatterlab {
@@ -213,6 +214,7 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
       ->type_name("FILE")
       ->allow_extra_args(false);  // one file per --env: a MATERIAL after it stays a material
   command->add_flag("--json", options.json, "Print the verdicts, the report's path and the timings as JSON");
+  addPluginOption(*command);
   return command;
 }
 

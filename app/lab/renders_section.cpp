@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "app/data_directory.h"
 #include "app/exit_code.h"
 #include "app/lab/html.h"
 #include "integrator/environment_map_file.h"
@@ -15,10 +16,6 @@
 #include "integrator/silhouette_mask.h"
 #include "materials/core/atomic_file.h"
 #include "materials/registry/parameter_spec.h"
-
-#ifndef SCATTERLAB_DATA_DIR
-#error "SCATTERLAB_DATA_DIR must name the data directory (app/CMakeLists.txt)"
-#endif
 
 namespace scatterlab {
 
@@ -135,7 +132,8 @@ std::vector<Subject> subjectsOf(const LabMaterial& material, const MaterialFits*
 }  // namespace
 
 std::vector<std::string> defaultLabEnvironmentFiles() {
-  const fs::path maps = fs::path(SCATTERLAB_DATA_DIR) / "envmaps";
+  const fs::path maps =
+      runtimeDataDirectory("the lab's default environment maps (or give --env)") / "envmaps";
   return {(maps / "studio.exr").string(), (maps / "courtyard.exr").string()};
 }
 

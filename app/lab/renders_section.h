@@ -41,7 +41,8 @@ struct LabEnvironment {
 };
 
 // The environment maps a report uses when --env is not given: two of data/envmaps (an
-// interior with soft light, an exterior with a sun).
+// interior with soft light, an exterior with a sun), installed beside the executable
+// (app/data_directory.h).
 std::vector<std::string> defaultLabEnvironmentFiles();
 
 // Reads and checks each map (integrator/environment_map_file.h). A missing, unreadable or

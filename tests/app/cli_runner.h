@@ -124,8 +124,10 @@ inline ProcessResult runScatterlab(const std::vector<std::string>& args, const R
 }
 
 // Runs the real executable with stdout and stderr redirected to files (files, not pipes: a
-// full pipe would block the child while the parent waits for it).
-inline ProcessResult runScatterlab(const std::vector<std::string>& args) {
+// full pipe would block the child while the parent waits for it), in this process's environment
+// plus `environment` ("NAME=VALUE" entries, which override).
+inline ProcessResult runScatterlab(const std::vector<std::string>& args,
+                                   const std::vector<std::string>& environment = {}) {
   const fs::path outPath = uniquePath("stdout"), errPath = uniquePath("stderr");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -139,9 +141,21 @@ inline ProcessResult runScatterlab(const std::vector<std::string>& args) {
   for (std::string& arg : argvStrings) argv.push_back(arg.data());
   argv.push_back(nullptr);
 
+  std::vector<std::string> environmentStrings = environment;
+  for (char** entry = environ; *entry; ++entry) {
+    const std::string text = *entry;
+    const std::string name = text.substr(0, text.find('='));
+    bool overridden = false;
+    for (const std::string& extra : environment) overridden |= extra.rfind(name + "=", 0) == 0;
+    if (!overridden) environmentStrings.push_back(text);
+  }
+  std::vector<char*> envp;
+  for (std::string& entry : environmentStrings) envp.push_back(entry.data());
+  envp.push_back(nullptr);
+
   ProcessResult run;
   pid_t pid = 0;
-  const int spawnError = posix_spawn(&pid, SCATTERLAB_EXE, &actions, nullptr, argv.data(), environ);
+  const int spawnError = posix_spawn(&pid, SCATTERLAB_EXE, &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   EXPECT_EQ(spawnError, 0) << "cannot start " << SCATTERLAB_EXE;
   if (spawnError != 0) return run;
