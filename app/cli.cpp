@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/check_command.h"
+#include "app/eval_command.h"
 #include "app/exit_code.h"
 #include "app/fit_command.h"
 #include "app/generate_table_command.h"
@@ -48,6 +49,8 @@ int runCli(int argc, char** argv) {
   CheckCommandOptions checkOptions;
   const CLI::App* models = addModelsCommand(app, modelsOptions);
   const CLI::App* check = addCheckCommand(app, checkOptions);
+  EvalCommandOptions evalOptions;
+  const CLI::App* evalCommand = addEvalCommand(app, evalOptions);
   SynthCommandOptions synthOptions;
   const CLI::App* synth = addSynthCommand(app, synthOptions);
   ProfileCommandOptions profileOptions;
@@ -69,6 +72,7 @@ int runCli(int argc, char** argv) {
     app.parse(argc, argv);
     if (*models) return runModelsCommand(modelsOptions);
     if (*check) return runCheckCommand(checkOptions);
+    if (*evalCommand) return runEvalCommand(evalOptions);
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);
     if (*synth) return runSynthCommand(synthOptions);
     if (*profile) return runProfileCommand(profileOptions);
