@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <fstream>
 #include <optional>
 
 #include "materials/bsdf/registry.h"
+#include "materials/core/parse_number.h"
 
 namespace scatterlab {
 
@@ -86,7 +86,7 @@ class LineParser {
   double number() {
     skipSpace();
     double x = 0;
-    const auto [end, error] = std::from_chars(text_.data() + pos_, text_.data() + text_.size(), x);
+    const auto [end, error] = fromChars(text_.data() + pos_, text_.data() + text_.size(), x);
     if (error != std::errc() || !std::isfinite(x)) fail("expected a finite number");
     pos_ = size_t(end - text_.data());
     return x;
