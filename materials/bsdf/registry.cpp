@@ -374,23 +374,10 @@ std::string readMaterialFile(const std::string& path) {
 // Path parameters of every material object in `value` (nested ones too) made relative to
 // `directory` when they are relative paths.
 void resolveRelativePaths(json& value, const std::filesystem::path& directory) {
-  if (value.is_array()) {
-    for (json& element : value) resolveRelativePaths(element, directory);
-    return;
-  }
-  if (!value.is_object()) return;
-  const auto type = value.find("type");
-  const MaterialModel* model =
-      type != value.end() && type->is_string() ? findMaterialModel(type->get<std::string>()) : nullptr;
-  for (auto& [key, entry] : value.items()) {
-    const ParameterSpec* spec = model ? model->findParameter(key) : nullptr;
-    if (spec && spec->kind == ParameterKind::Path && entry.is_string() && !entry.get<std::string>().empty()) {
-      const std::filesystem::path path(entry.get<std::string>());
-      if (path.is_relative()) entry = (directory / path).lexically_normal().string();
-    } else {
-      resolveRelativePaths(entry, directory);
-    }
-  }
+  forEachPathParameter(value, [&](json& entry) {
+    const std::filesystem::path path(entry.get<std::string>());
+    if (path.is_relative()) entry = (directory / path).lexically_normal().string();
+  });
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1314,6 +1301,24 @@ std::optional<nlohmann::json> withMismatchedRoughness(const nlohmann::json& mate
   auto rougher = withScaledRoughness(material, factor);
   if (!rougher || *rougher != completeMaterial(material)) return rougher;
   return withScaledRoughness(material, 1.0 / factor);
+}
+
+void forEachPathParameter(json& value, const std::function<void(json& path)>& visit) {
+  if (value.is_array()) {
+    for (json& element : value) forEachPathParameter(element, visit);
+    return;
+  }
+  if (!value.is_object()) return;
+  const auto type = value.find("type");
+  const MaterialModel* model =
+      type != value.end() && type->is_string() ? findMaterialModel(type->get<std::string>()) : nullptr;
+  for (auto& [key, entry] : value.items()) {
+    const ParameterSpec* spec = model ? model->findParameter(key) : nullptr;
+    if (spec && spec->kind == ParameterKind::Path && entry.is_string() && !entry.get<std::string>().empty())
+      visit(entry);
+    else
+      forEachPathParameter(entry, visit);
+  }
 }
 
 bool isInlineMaterial(std::string_view argument) {

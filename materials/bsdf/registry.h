@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -200,6 +201,11 @@ std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material
 // as much smoother when the roughness is at its range limit (where scaling up would change
 // nothing and the control would prove nothing); nullopt for models without a lobe width.
 std::optional<nlohmann::json> withMismatchedRoughness(const nlohmann::json& material, double factor);
+
+// Calls `visit` with the value of every path parameter (a non-empty string) of `material` and of
+// the materials nested in it, at any depth; `visit` may replace it (a measured material's "file"
+// made relative to a directory, or pointed at a copy).
+void forEachPathParameter(nlohmann::json& material, const std::function<void(nlohmann::json& path)>& visit);
 
 // True when a material argument is inline JSON rather than a file path.
 bool isInlineMaterial(std::string_view argument);
