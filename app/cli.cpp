@@ -7,6 +7,7 @@
 #include "app/check_command.h"
 #include "app/eval_command.h"
 #include "app/exit_code.h"
+#include "app/explore_command.h"
 #include "app/fit_command.h"
 #include "app/generate_table_command.h"
 #include "app/lab/lab_command.h"
@@ -63,6 +64,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
   LabCommandOptions labOptions;
   const CLI::App* lab = addLabCommand(app, labOptions);
+  ExploreCommandOptions exploreOptions;
+  const CLI::App* explore = addExploreCommand(app, exploreOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -80,6 +83,7 @@ int runCli(int argc, char** argv) {
     if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
     if (*renderCommand) return runRenderCommand(renderOptions);
     if (*lab) return runLabCommand(labOptions);
+    if (*explore) return runExploreCommand(exploreOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);
