@@ -15,8 +15,10 @@
 #include "app/exit_code.h"
 #include "app/material_argument.h"
 #include "materials/bsdf/direction_pairs.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/parameter_spec.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

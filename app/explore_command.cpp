@@ -11,8 +11,10 @@
 #include "app/lab/staged_directory.h"
 #include "app/material_argument.h"
 #include "app/option_values.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/parameter_spec.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/chi_square_images.h"
 
 namespace scatterlab {

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/material_file.h"
 
 namespace scatterlab {
 

@@ -21,10 +21,13 @@
 #include <nlohmann/json.hpp>
 
 #include "materials/bsdf/direction_pairs.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/rng.h"
 #include "materials/core/spherical.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/parameter_spec.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

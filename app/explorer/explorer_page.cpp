@@ -5,8 +5,9 @@
 #include <sstream>
 
 #include "app/lab/embedded_assets.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/parameter_spec.h"
 #include "validation/chi_square_images.h"
 
 namespace scatterlab {

@@ -6,6 +6,8 @@
 
 #include "materials/bssrdf/measured_media.h"
 #include "materials/bssrdf/subsurface_far_field_brdf.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <optional>
 
-#include "materials/bsdf/registry.h"
 #include "materials/core/parse_number.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 

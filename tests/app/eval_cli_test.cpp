@@ -11,11 +11,11 @@
 
 #include "cli_runner.h"
 #include "materials/bsdf/lambertian.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/spherical.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
+#include "materials/registry/model_list.h"
 
 namespace scatterlab {
 namespace {
