@@ -12,7 +12,9 @@
 #include <CLI/CLI.hpp>
 
 #include "app/check_command.h"
+#include "app/eval_command.h"
 #include "app/exit_code.h"
+#include "app/explore_command.h"
 #include "app/fit_command.h"
 #include "app/generate_table_command.h"
 #include "app/interrupt_cleanup.h"
@@ -126,6 +128,8 @@ int runCli(int argc, char** argv) {
   CheckCommandOptions checkOptions;
   const CLI::App* models = addModelsCommand(app, modelsOptions);
   const CLI::App* check = addCheckCommand(app, checkOptions);
+  EvalCommandOptions evalOptions;
+  const CLI::App* evalCommand = addEvalCommand(app, evalOptions);
   SynthCommandOptions synthOptions;
   const CLI::App* synth = addSynthCommand(app, synthOptions);
   ProfileCommandOptions profileOptions;
@@ -138,6 +142,8 @@ int runCli(int argc, char** argv) {
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
   LabCommandOptions labOptions;
   const CLI::App* lab = addLabCommand(app, labOptions);
+  ExploreCommandOptions exploreOptions;
+  const CLI::App* explore = addExploreCommand(app, exploreOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -153,6 +159,7 @@ int runCli(int argc, char** argv) {
     loadPluginsFromEnvironment();
     if (*models) return runModelsCommand(modelsOptions);
     if (*check) return runCheckCommand(checkOptions);
+    if (*evalCommand) return runEvalCommand(evalOptions);
     if (*generateTable) return runGenerateTableCommand(generateTableOptions);
     if (*synth) return runSynthCommand(synthOptions);
     if (*profile) return runProfileCommand(profileOptions);
@@ -160,6 +167,7 @@ int runCli(int argc, char** argv) {
     if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
     if (*renderCommand) return runRenderCommand(renderOptions);
     if (*lab) return runLabCommand(labOptions);
+    if (*explore) return runExploreCommand(exploreOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   });
   return checkStandardOutput(code);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/explorer/explorer_page.h"
 #include "app/lab/check_section.h"
 #include "app/lab/fit_section.h"
 #include "app/lab/html.h"
@@ -249,6 +250,13 @@ int runLabCommand(const LabCommandOptions& options) {
     reports.push_back(
         MaterialReporter(materials[i], settings, environments, staged.path(), timer, progress, step).run());
   }
+  // The explorer, preloaded with every material (each section links to it), before the scratch
+  // tables it embeds are removed.
+  timer.time("explorer", "", [&] {
+    std::vector<ExplorerMaterial> explorerMaterials;
+    for (const LabMaterial& m : materials) explorerMaterials.push_back({m.folder, m.name, m.description});
+    writeExplorer(staged.path() / LabExplorerFolder, explorerMaterials);
+  });
   std::error_code error;
   fs::remove_all(staged.path() / "scratch", error);  // tables of a showcase that had no cache directory
 

@@ -53,6 +53,13 @@ std::string materialHtml(const MaterialReport& m) {
   const std::string header =
       html::element("h2", html::escape(m.name) + " " + badge(m.passed)) +
       html::textElement("p", m.about, {{"class", "about"}}) +
+      html::element(
+          "p",
+          html::textElement("a", "Open it in the explorer",
+                            {{"href", std::string(LabExplorerFolder) + "/index.html#" + m.folder},
+                             {"class", "explorer-link"}}) +
+              ": its lobe, f cos, albedo and samples live, computed by the same code in the browser",
+          {{"class", "small"}}) +
       html::element("details",
                     html::textElement("summary", "material description (every default filled in)") +
                         html::textElement("pre", jsonText(m.description))) +

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "materials/bssrdf/measured_media.h"
+#include "materials/bssrdf/subsurface_far_field_brdf.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/spec_validation.h"
 
@@ -252,6 +253,11 @@ SubsurfaceMaterial makeSubsurface(const json& material) {
     throwMaterialKeyError("type", validated.model->type, "is a BSDF model, not a subsurface material",
                           "\"subsurface\"");
   return buildSubsurface(validated.parameters, validated.completed);
+}
+
+std::unique_ptr<BsdfModel> makeFarFieldBsdf(const json& material) {
+  if (!isSubsurfaceMaterial(material)) return makeBsdf(material);
+  return std::make_unique<SubsurfaceFarFieldBrdf>(makeSubsurface(material).bssrdf());
 }
 
 }  // namespace scatterlab

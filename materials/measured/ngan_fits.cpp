@@ -4,11 +4,13 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "materials/core/bounded_file.h"
 #include "materials/core/quoted.h"
+#include "materials/core/parse_number.h"
 #include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
@@ -97,7 +99,7 @@ class LineParser {
   double number() {
     skipSpace();
     double x = 0;
-    const auto [end, error] = std::from_chars(text_.data() + pos_, text_.data() + text_.size(), x);
+    const auto [end, error] = fromChars(text_.data() + pos_, text_.data() + text_.size(), x);
     if (error != std::errc() || !std::isfinite(x)) fail("expected a finite number");
     pos_ = size_t(end - text_.data());
     return x;

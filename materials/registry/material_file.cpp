@@ -47,35 +47,6 @@ std::string readMaterialFile(const std::string& path) {
   }
 }
 
-// Path parameters of every material object in `value` (nested ones too) made relative to
-// `directory` when they are relative paths. Iterative: the depth is limited when the text is
-// parsed, but the walk must not depend on that.
-void resolveRelativePaths(json& root, const std::filesystem::path& directory) {
-  std::vector<json*> stack{&root};
-  while (!stack.empty()) {
-    json& value = *stack.back();
-    stack.pop_back();
-    if (value.is_array()) {
-      for (json& element : value) stack.push_back(&element);
-      continue;
-    }
-    if (!value.is_object()) continue;
-    const auto type = value.find("type");
-    const MaterialModel* model =
-        type != value.end() && type->is_string() ? findMaterialModel(type->get<std::string>()) : nullptr;
-    for (auto& [key, entry] : value.items()) {
-      const ParameterSpec* spec = model ? model->findParameter(key) : nullptr;
-      if (spec && spec->kind == ParameterKind::Path && entry.is_string() &&
-          !entry.get<std::string>().empty()) {
-        const std::filesystem::path path(entry.get<std::string>());
-        if (path.is_relative()) entry = (directory / path).lexically_normal().string();
-      } else {
-        stack.push_back(&entry);
-      }
-    }
-  }
-}
-
 }  // namespace
 
 bool isInlineMaterial(std::string_view argument) {
@@ -95,8 +66,36 @@ nlohmann::json loadMaterialArgument(const std::string& argument) {
   // A MERL table given as it is: the measured material that reads it.
   if (argument.ends_with(".binary")) return json{{"type", "measured"}, {"file", argument}};
   json material = parseMaterialText(readMaterialFile(argument), "material file " + inQuotes(argument));
-  resolveRelativePaths(material, std::filesystem::path(argument).parent_path());
+  const std::filesystem::path directory = std::filesystem::path(argument).parent_path();
+  forEachPathParameter(material, [&](json& entry) {
+    const std::filesystem::path path(entry.get<std::string>());
+    if (path.is_relative()) entry = (directory / path).lexically_normal().string();
+  });
   return material;
+}
+
+// Iterative: the depth is limited when the text is parsed, but the walk must not depend on that.
+void forEachPathParameter(json& root, const std::function<void(json& path)>& visit) {
+  std::vector<json*> stack{&root};
+  while (!stack.empty()) {
+    json& value = *stack.back();
+    stack.pop_back();
+    if (value.is_array()) {
+      for (json& element : value) stack.push_back(&element);
+      continue;
+    }
+    if (!value.is_object()) continue;
+    const auto type = value.find("type");
+    const MaterialModel* model =
+        type != value.end() && type->is_string() ? findMaterialModel(type->get<std::string>()) : nullptr;
+    for (auto& [key, entry] : value.items()) {
+      const ParameterSpec* spec = model ? model->findParameter(key) : nullptr;
+      if (spec && spec->kind == ParameterKind::Path && entry.is_string() && !entry.get<std::string>().empty())
+        visit(entry);
+      else
+        stack.push_back(&entry);
+    }
+  }
 }
 
 }  // namespace scatterlab

@@ -2,6 +2,7 @@
 // descriptions"). Parse errors name the source, the position and, inside a value, the key.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -23,5 +24,10 @@ bool isInlineMaterial(std::string_view argument);
 // depth, are made relative to the file's directory, so a material file and its data can move
 // together.
 nlohmann::json loadMaterialArgument(const std::string& argument);
+
+// Calls `visit` with the value of every path parameter (a non-empty string) of `material` and of
+// the materials nested in it, at any depth; `visit` may replace it (a measured material's "file"
+// made relative to a directory, or pointed at a copy).
+void forEachPathParameter(nlohmann::json& material, const std::function<void(nlohmann::json& path)>& visit);
 
 }  // namespace scatterlab
