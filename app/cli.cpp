@@ -13,6 +13,7 @@
 #include "app/profile_command.h"
 #include "app/render_command.h"
 #include "app/shape_factor_command.h"
+#include "app/sweep/sweep_command.h"
 #include "app/synth_command.h"
 #include "materials/registry/parameter_spec.h"
 
@@ -60,6 +61,10 @@ int runCli(int argc, char** argv) {
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
   LabCommandOptions labOptions;
   const CLI::App* lab = addLabCommand(app, labOptions);
+  SweepCommandOptions sweepOptions;
+  const CLI::App* sweep = addSweepCommand(app, sweepOptions);
+  MergeCommandOptions mergeOptions;
+  const CLI::App* merge = addMergeCommand(app, mergeOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -76,6 +81,8 @@ int runCli(int argc, char** argv) {
     if (*shapeFactor) return runShapeFactorCommand(shapeFactorOptions);
     if (*renderCommand) return runRenderCommand(renderOptions);
     if (*lab) return runLabCommand(labOptions);
+    if (*sweep) return runSweepCommand(sweepOptions);
+    if (*merge) return runMergeCommand(mergeOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   } catch (const CLI::ParseError& error) {
     return exitCodeOfParseError(app, error);
