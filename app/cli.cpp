@@ -26,6 +26,7 @@
 #include "app/render_command.h"
 #include "app/shape_factor_command.h"
 #include "app/subcommand_names.h"
+#include "app/sweep/sweep_command.h"
 #include "app/synth_command.h"
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
@@ -144,6 +145,10 @@ int runCli(int argc, char** argv) {
   const CLI::App* lab = addLabCommand(app, labOptions);
   ExploreCommandOptions exploreOptions;
   const CLI::App* explore = addExploreCommand(app, exploreOptions);
+  SweepCommandOptions sweepOptions;
+  const CLI::App* sweep = addSweepCommand(app, sweepOptions);
+  MergeCommandOptions mergeOptions;
+  const CLI::App* merge = addMergeCommand(app, mergeOptions);
 
   GenerateTableOptions generateTableOptions;  // a hidden developer command
   const CLI::App* generateTable = addGenerateTableCommand(app, generateTableOptions);
@@ -168,6 +173,8 @@ int runCli(int argc, char** argv) {
     if (*renderCommand) return runRenderCommand(renderOptions);
     if (*lab) return runLabCommand(labOptions);
     if (*explore) return runExploreCommand(exploreOptions);
+    if (*sweep) return runSweepCommand(sweepOptions);
+    if (*merge) return runMergeCommand(mergeOptions);
     return reportError("no subcommand ran", ExitCode::InternalError);
   });
   return checkStandardOutput(code);
