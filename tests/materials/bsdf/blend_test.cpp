@@ -16,6 +16,7 @@
 #include "materials/bsdf/smooth_conductor.h"
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/core/rng.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -323,10 +324,7 @@ INSTANTIATE_TEST_SUITE_P(
             {"material key \"materials\"", "cannot be blended", "interior indices"},
             true}),
     [](const testing::TestParamInfo<NestedError>& info) {
-      std::string name = info.param.what;
-      for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-      return name;
+      return test_names::readableTestName(info.param.what);
     });
 
 TEST(BlendRegistry, TooDeepNestingIsAnErrorNotACrash) {

@@ -10,6 +10,7 @@
 #include "materials/bsdf/metals.h"
 #include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -248,10 +249,7 @@ INSTANTIATE_TEST_SUITE_P(
                     {"\"eta\"", "[0.2,0.4,1.4]", "needs \"k\"", "\"eta\" and \"k\" together"}},
         BadMaterial{"k without eta", {{"type", "conductor"}, {"k", 3.0}}, {"\"k\"", "3", "needs \"eta\""}}),
     [](const testing::TestParamInfo<BadMaterial>& info) {
-      std::string name = info.param.what;
-      for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-      return name;
+      return test_names::readableTestName(info.param.what);
     });
 
 // ---- Roughness scaling for the negative control -----------------------------------------

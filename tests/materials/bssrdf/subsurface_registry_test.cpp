@@ -2,6 +2,7 @@
 
 #include "bssrdf_test_support.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -161,9 +162,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadSubsurface{"unknown key",
                       {{"type", "subsurface"}, {"albedo", 0.5}},
                       {"\"albedo\"", "\"reflectance\"", "\"mfp\""}},
-        BadSubsurface{"a BSDF",
-                      {{"type", "lambertian"}},
-                      {"\"type\"", "\"lambertian\"", "not a subsurface material"}}));
+        BadSubsurface{
+            "a BSDF", {{"type", "lambertian"}}, {"\"type\"", "\"lambertian\"", "not a subsurface material"}}),
+    [](const testing::TestParamInfo<BadSubsurface>& info) {
+      return test_names::readableTestName(info.param.what);
+    });
 
 TEST(SubsurfaceRegistry, MakeBsdfRefusesASubsurfaceMaterial) {
   try {
