@@ -122,6 +122,7 @@ int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
   if (options.albedos.empty())
     throw InputError("--albedos: no albedo given; allowed: a list of values in (0, 1)");
   std::vector<fitting::BurleyShapeFit> fits;
+  uint64_t nonFinite = 0;  // walk paths that stopped being finite (half_space_walk.h)
   ProgressLine progress;
   for (size_t i = 0; i < options.albedos.size(); ++i) {
     const double albedo = options.albedos[i];
@@ -130,14 +131,21 @@ int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
     settings.threads = options.threads;
     const HalfSpaceWalkResult walk =
         simulateHalfSpace(settings, progress.walkCallback("walk at A " + std::to_string(albedo)));
+    nonFinite += walk.nonFinite;
     fits.push_back(fitting::fitBurleyShapeFactor(walk, albedo));
   }
   progress.clear();
-  if (options.json)
-    std::cout << tableJson(options, fits).dump(2) << "\n";
-  else
+  if (options.json) {
+    json table = tableJson(options, fits);
+    table["non_finite_paths"] = nonFinite;
+    std::cout << table.dump(2) << "\n";
+  } else {
     printTable(options, fits);
-  return static_cast<int>(ExitCode::Success);
+  }
+  if (nonFinite == 0) return static_cast<int>(ExitCode::Success);
+  std::cerr << "shape-factor: " << nonFinite
+            << " walk paths stopped being finite; they are left out of every tally\n";
+  return static_cast<int>(ExitCode::CheckFailed);
 }
 
 }  // namespace scatterlab

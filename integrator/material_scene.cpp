@@ -4,12 +4,13 @@
 #include <string>
 #include <utility>
 
+#include "integrator/fault_injection.h"
 #include "materials/bsdf/registry.h"
 
 namespace scatterlab {
 
 RenderableMaterial makeRenderableMaterial(const nlohmann::json& material) {
-  if (!isSubsurfaceMaterial(material)) return {makeBsdf(material), std::nullopt};
+  if (!isSubsurfaceMaterial(material)) return {withTestFault(makeBsdf(material)), std::nullopt};
   SubsurfaceMaterial subsurface = makeSubsurface(material);
   try {
     makeSubsurfaceBoundary(subsurface);  // the renderer's own limits on the boundary

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "integrator/sample_value.h"
 #include "integrator/scene.h"
 #include "materials/bsdf/rough_dielectric.h"
 #include "materials/bsdf/smooth_dielectric.h"
@@ -81,8 +82,9 @@ std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape,
   const SurfaceGeometry geometry = scene.shapeGeometry(shape, xo);
   const double pdf = subsurface.probe.pdf(frame, point, xo, geometry.normal) / count;
   if (!(pdf > 0)) return std::nullopt;
+  // A weight that is not finite or negative is returned as it is: the path tracer ends the path
+  // on it and the film counts the sample (sample_value.h), where dropping it here would hide it.
   const Rgb weight = subsurface.material.profile->eval(glm::length(xo - point)) / pdf;
-  if (!isFinite(weight)) return std::nullopt;
   return DiffusionExit{xo, geometry, weight};
 }
 
@@ -126,7 +128,10 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
       d = sample->wo;
       p = offsetRayOrigin(hit, geometry.normal, d);
     }
-    if (!isFinite(weight)) return std::nullopt;
+    // A weight that is not finite or negative leaves the walk as it is, where it arose (before
+    // the roulette could end the walk on it): the path tracer ends the path on it and the film
+    // counts the sample (sample_value.h).
+    if (classifyValue(weight) != SampleValue::Valid) return WalkExit{p, -d, d, weight};
     // Russian roulette on the walk's own weight (path_tracer.cpp does the same for the path).
     if (event >= WalkRouletteEvents) {
       const double q = std::max({weight.x, weight.y, weight.z});

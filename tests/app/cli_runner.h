@@ -52,8 +52,10 @@ struct ProcessResult {
 };
 
 // Runs the real executable with stdout and stderr redirected to files (files, not pipes: a
-// full pipe would block the child while the parent waits for it).
-inline ProcessResult runScatterlab(const std::vector<std::string>& args) {
+// full pipe would block the child while the parent waits for it), in this process's
+// environment plus `environment` ("NAME=value" entries).
+inline ProcessResult runScatterlab(const std::vector<std::string>& args,
+                                   const std::vector<std::string>& environment = {}) {
   const fs::path outPath = uniquePath("stdout"), errPath = uniquePath("stderr");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -67,9 +69,15 @@ inline ProcessResult runScatterlab(const std::vector<std::string>& args) {
   for (std::string& arg : argvStrings) argv.push_back(arg.data());
   argv.push_back(nullptr);
 
+  std::vector<std::string> environmentStrings = environment;
+  std::vector<char*> envp;
+  for (std::string& entry : environmentStrings) envp.push_back(entry.data());
+  for (char** entry = environ; *entry; ++entry) envp.push_back(*entry);
+  envp.push_back(nullptr);
+
   ProcessResult run;
   pid_t pid = 0;
-  const int spawnError = posix_spawn(&pid, SCATTERLAB_EXE, &actions, nullptr, argv.data(), environ);
+  const int spawnError = posix_spawn(&pid, SCATTERLAB_EXE, &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   EXPECT_EQ(spawnError, 0) << "cannot start " << SCATTERLAB_EXE;
   if (spawnError != 0) return run;
