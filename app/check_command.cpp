@@ -16,9 +16,10 @@
 #include "app/option_values.h"
 #include "app/progress.h"
 #include "app/showcase.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
 

@@ -22,8 +22,9 @@
 #include "integrator/render_error.h"
 #include "integrator/scene_presets.h"
 #include "integrator/silhouette_mask.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

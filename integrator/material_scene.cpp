@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "integrator/fault_injection.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

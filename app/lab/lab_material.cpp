@@ -2,9 +2,10 @@
 
 #include <set>
 
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/chi_square_images.h"
 
 namespace scatterlab {

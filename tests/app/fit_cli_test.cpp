@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
-#include "materials/bsdf/registry.h"
 #include "materials/measured/merl_io.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

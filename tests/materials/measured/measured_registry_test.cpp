@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <fstream>
 
-#include "materials/bsdf/registry.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 #include "measured_test_support.h"
 
 namespace scatterlab {
