@@ -7,6 +7,7 @@
 
 #include "integrator/sample_value.h"
 #include "integrator/scene.h"
+#include "materials/bsdf/dielectric_index_spec.h"
 #include "materials/bsdf/rough_dielectric.h"
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/bssrdf/henyey_greenstein.h"
@@ -37,9 +38,12 @@ std::string toString(SubsurfaceMode mode) { return mode == SubsurfaceMode::Diffu
 std::unique_ptr<BsdfModel> makeSubsurfaceBoundary(const SubsurfaceMaterial& material) {
   const double eta = material.medium.eta;
   if (material.boundary == SubsurfaceBoundary::Smooth) return std::make_unique<SmoothDielectricBsdf>(eta);
-  if (!(eta >= 1.02 && eta <= 4.0))
-    throw std::invalid_argument("subsurface material: a rough boundary needs eta in [1.02, 4], not " +
-                                std::to_string(eta) + " (use \"boundary\": \"smooth\")");
+  // The registry refuses such a material when it is read (subsurface_registry.cpp); a
+  // SubsurfaceMaterial built in code reaches here unchecked.
+  if (!RoughDielectricIndexRange.contains(eta))
+    throw std::invalid_argument("subsurface material: a rough boundary needs eta " +
+                                RoughDielectricIndexRange.describe() + ", not " + std::to_string(eta) +
+                                " (use \"boundary\": \"smooth\")");
   return makeRoughDielectric(MicrofacetType::Ggx, material.roughness, material.roughness, eta,
                              MultipleScattering::KullaConty);
 }

@@ -239,9 +239,10 @@ TEST_F(RenderCliBadInput, Materials) {
                  prefix);
   expectBadInput({"render", "no-such-material.json", "--out", prefix.string()}, {"no-such-material.json"},
                  prefix);
-  // A subsurface material's rough boundary is a rough dielectric: eta 1 has no microfacet refraction.
+  // A subsurface material's rough boundary is a rough dielectric: eta 1 has no microfacet
+  // refraction, and the material is refused when it is read, naming the key.
   expectBadInput({"render", R"({"type":"subsurface","eta":1,"boundary":"rough"})", "--out", prefix.string()},
-                 {"boundary", "[1.02, 4]"}, prefix);
+                 {"\"eta\"", "[1.02, 4]", "rough boundary"}, prefix);
   expectBadInput(
       {"render", R"({"type":"subsurface","sigma_s":[1,1,1],"sigma_a":[-1,0,0]})", "--out", prefix.string()},
       {"sigma_a"}, prefix);
