@@ -167,6 +167,20 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
   }
 }
 
+// Walk paths whose position stopped being finite (half_space_walk.h) are named on stderr and
+// fail the command (exit 1) after its output is written.
+int nonFiniteWalkStatus(const std::vector<const HalfSpaceWalkResult*>& walks) {
+  uint64_t nonFinite = 0, paths = 0;
+  for (const HalfSpaceWalkResult* w : walks) {
+    nonFinite += w->nonFinite;
+    paths += w->settings.paths;
+  }
+  if (nonFinite == 0) return static_cast<int>(ExitCode::Success);
+  std::cerr << "profile: " << nonFinite << " of " << paths
+            << " walk paths stopped being finite; they are left out of every tally\n";
+  return static_cast<int>(ExitCode::CheckFailed);
+}
+
 json walkJson(const ChannelWalk& walk) {
   const HalfSpaceWalkResult& r = walk.result;
   json out{{"albedo", r.settings.albedo},
@@ -178,6 +192,7 @@ json walkJson(const ChannelWalk& walk) {
            {"total_reflectance", r.totalReflectance},
            {"std_error", r.totalStdError},
            {"truncated_paths", r.truncated},
+           {"non_finite_paths", r.nonFinite},
            {"mean_scattering_events", double(r.scatteringEvents) / double(r.settings.paths)},
            {"profile", r.profile},
            {"profile_std_error", r.profileStdError}};
@@ -242,7 +257,8 @@ json comparisonJson(const LoadedMaterial& loaded, const ProfileComparison& compa
                      {"total_reflectance", w.totalReflectance},
                      {"std_error", w.totalStdError},
                      {"single_scattering", w.singleReflectance},
-                     {"single_scattering_std_error", w.singleStdError}});
+                     {"single_scattering_std_error", w.singleStdError},
+                     {"non_finite_paths", w.nonFinite}});
   json models = json::array();
   for (const ModelComparison& model : comparison.models)
     models.push_back({{"model", toString(model.model)},
@@ -291,7 +307,9 @@ int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& lo
     std::cout << jsonText(comparisonJson(loaded, comparison)) << "\n";
   else
     printComparison(loaded, comparison);
-  return static_cast<int>(ExitCode::Success);
+  std::vector<const HalfSpaceWalkResult*> walks;
+  for (const HalfSpaceWalkResult& w : comparison.walks) walks.push_back(&w);
+  return nonFiniteWalkStatus(walks);
 }
 
 }  // namespace
@@ -376,9 +394,12 @@ int runProfileCommand(const ProfileCommandOptions& options) {
     }
   }
 
+  std::vector<const HalfSpaceWalkResult*> walkResults;
+  for (const std::optional<ChannelWalk>& walk : walks)
+    if (walk) walkResults.push_back(&walk->result);
   if (!options.json) {
     printText(loaded, edges, means, walks);
-    return static_cast<int>(ExitCode::Success);
+    return nonFiniteWalkStatus(walkResults);
   }
   json channels = json::array();
   for (int c = 0; c < 3; ++c) {
@@ -401,7 +422,7 @@ int runProfileCommand(const ProfileCommandOptions& options) {
                       {"radius_edges", edges},
                       {"channels", std::move(channels)}};
   std::cout << jsonText(document) << "\n";
-  return static_cast<int>(ExitCode::Success);
+  return nonFiniteWalkStatus(walkResults);
 }
 
 }  // namespace scatterlab

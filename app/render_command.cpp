@@ -36,6 +36,22 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
+// A render whose film dropped samples (not finite, or negative: render.h) has written its
+// images, with those samples as 0, and fails: exit 1, as a material that fails a check.
+int droppedSampleStatus(uint64_t droppedSamples) {
+  return static_cast<int>(droppedSamples == 0 ? ExitCode::Success : ExitCode::CheckFailed);
+}
+
+// The line that names what the film dropped, for stderr; empty when nothing was.
+std::string droppedSampleMessage(const std::string& label, const RenderStatistics& stats) {
+  if (stats.droppedSamples() == 0) return "";
+  return "render: " + label + ": " + std::to_string(stats.droppedSamples()) + " of " +
+         std::to_string(stats.samples) + " samples dropped (" + std::to_string(stats.nonFiniteSamples) +
+         " not finite, " + std::to_string(stats.negativeSamples) +
+         " negative): the material returned values that no light transport produces; they count as 0 "
+         "in the image\n";
+}
+
 std::optional<int> parsePositive(const std::string& text) {
   int value = 0;
   const char* end = text.data() + text.size();
@@ -482,6 +498,9 @@ int runRenderCommand(const RenderCommandOptions& options) {
 
   // ---- Render.
   json runs = json::array();
+  // Samples the film dropped (not finite, or negative: render.h); any fails the command.
+  uint64_t droppedSamples = 0;
+  std::string droppedMessages;  // printed once the progress line is gone
   std::vector<RenderResult> results;
   {
     ProgressLine progress;
@@ -503,7 +522,11 @@ int runRenderCommand(const RenderCommandOptions& options) {
                {"vertices", stats.vertices},
                {"samples_per_second", double(stats.samples) / stats.seconds},
                {"vertices_per_second", double(stats.vertices) / stats.seconds},
-               {"non_finite_samples", stats.nonFiniteSamples}};
+               {"non_finite_samples", stats.nonFiniteSamples},
+               {"negative_samples", stats.negativeSamples},
+               {"dropped_samples", stats.droppedSamples()}};
+      droppedSamples += stats.droppedSamples();
+      droppedMessages += droppedSampleMessage(material.label, stats);
       if (preset == ScenePreset::MaterialSphere) {
         const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
         run["sphere"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Sphere));
@@ -513,6 +536,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
       results.push_back(std::move(result));
     }
   }
+
+  std::cerr << droppedMessages;
 
   // ---- Write.
   if (gallery) {
@@ -551,10 +576,12 @@ int runRenderCommand(const RenderCommandOptions& options) {
                       {"filter", options.filter},
                       {"exr", paths.exr.string()},
                       {"png", paths.png.string()},
-                      {"renders", runs}}
+                      {"renders", runs},
+                      {"dropped_samples", droppedSamples},
+                      {"passed", droppedSamples == 0}}
                      .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
-    return static_cast<int>(ExitCode::Success);
+    return droppedSampleStatus(droppedSamples);
   }
   for (const json& run : runs) {
     std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height
@@ -569,13 +596,14 @@ int runRenderCommand(const RenderCommandOptions& options) {
       else
         std::cout << ", " << region << " mean " << run[region]["mean"].get<double>();
     }
-    if (run["non_finite_samples"].get<uint64_t>() > 0)
-      std::cout << ", WARNING: " << run["non_finite_samples"].get<uint64_t>()
-                << " non-finite samples dropped";
+    if (const uint64_t dropped = run["dropped_samples"].get<uint64_t>(); dropped > 0)
+      std::cout << ", FAILED: " << dropped << " samples dropped ("
+                << run["non_finite_samples"].get<uint64_t>() << " not finite, "
+                << run["negative_samples"].get<uint64_t>() << " negative)";
     std::cout << "\n";
   }
   std::cout << "wrote " << paths.exr.string() << " and " << paths.png.string() << "\n";
-  return static_cast<int>(ExitCode::Success);
+  return droppedSampleStatus(droppedSamples);
 }
 
 }  // namespace scatterlab

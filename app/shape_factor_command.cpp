@@ -133,19 +133,27 @@ int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
                                  std::to_string(options.paths) + " paths",
                              walks));
   std::vector<fitting::BurleyShapeFit> fits;
+  uint64_t nonFinite = 0;  // walk paths that stopped being finite (half_space_walk.h)
   ProgressLine progress;
   for (size_t i = 0; i < walks.size(); ++i) {
     const double albedo = options.albedos[i];
     const HalfSpaceWalkResult walk =
         simulateHalfSpace(walks[i], progress.walkCallback("walk at A " + std::to_string(albedo)));
+    nonFinite += walk.nonFinite;
     fits.push_back(fitting::fitBurleyShapeFactor(walk, albedo));
   }
   progress.clear();
-  if (options.json)
-    std::cout << jsonText(tableJson(options, fits)) << "\n";
-  else
+  if (options.json) {
+    json table = tableJson(options, fits);
+    table["non_finite_paths"] = nonFinite;
+    std::cout << jsonText(table) << "\n";
+  } else {
     printTable(options, fits);
-  return static_cast<int>(ExitCode::Success);
+  }
+  if (nonFinite == 0) return static_cast<int>(ExitCode::Success);
+  std::cerr << "shape-factor: " << nonFinite
+            << " walk paths stopped being finite; they are left out of every tally\n";
+  return static_cast<int>(ExitCode::CheckFailed);
 }
 
 }  // namespace scatterlab

@@ -119,7 +119,7 @@ Chart sliceChart(const std::string& id, const MeasuredSlice& slice, const Family
     const std::string label = "theta_d " + html::degrees(thetaDiffCentreDeg(d));
     chart.series.push_back(
         {label + " data", paletteColor(i), SeriesStyle::Points, sliceAlongThetaHalf(slice, d), {}, {}});
-    ChartSeries curve{label + " fit", paletteColor(i), SeriesStyle::Line, {}, {}, {}};
+    ChartSeries curve{label + " fit", paletteColor(i), SeriesStyle::Line, {}, {}, {}, /*setsRange=*/false};
     for (int h = 0; h < merl::ThetaHalfCells; ++h) {
       const auto [wi, wo] =
           directionsFromHalfDiff(merl::thetaHalfAt(h + 0.5), 0.0, merl::thetaDiffAt(d + 0.5), phiDiff);

@@ -119,7 +119,13 @@ class MaterialReporter {
   void addSubsurfaceSection() {
     const SubsurfaceComparison comparison =
         timer_.time("walk", m_.name, [&] { return compareWithWalk(*m_.subsurface, settings_, progress_); });
-    report_.sections.push_back(subsurfaceSection(m_, comparison));
+    ReportSection section = subsurfaceSection(m_, comparison);
+    // Walk paths that stopped being finite fail the material, as a failed check.
+    if (const uint64_t nonFinite = section.data.value("non_finite_paths", uint64_t(0)); nonFinite > 0) {
+      report_.passed = false;
+      report_.verdict += "; " + std::to_string(nonFinite) + " walk paths not finite";
+    }
+    report_.sections.push_back(std::move(section));
     Rgb walk(0.0), se(0.0);
     double worst = 0;
     for (int c = 0; c < 3; ++c) {
@@ -137,6 +143,13 @@ class MaterialReporter {
     ReportSection renders = timer_.time("render", m_.name, [&] {
       return rendersSection(m_, m_.table ? &fits_ : nullptr, settings_, environments_, dir_, progress_);
     });
+    // Samples the film dropped (not finite or negative) fail the material, as a failed check.
+    if (const uint64_t dropped = renders.data.value("dropped_samples", uint64_t(0)); dropped > 0) {
+      report_.passed = false;
+      report_.verdict += "; " + std::to_string(dropped) + " render samples dropped";
+      report_.keyNumbers.push_back(
+          {"renders", std::to_string(dropped) + " samples dropped (not finite or negative)"});
+    }
     if (const std::string refusal = renderRefusal(renders); !refusal.empty())
       report_.keyNumbers.push_back({"renders", "not rendered: " + refusal});
     if (const std::string closest = closestFitInRenders(renders); !closest.empty())

@@ -15,6 +15,10 @@
 // with the renderer's message where its picture would be. No type is special-cased here, so a
 // material the renderer learns to render (subsurface materials, for instance) appears in the
 // report without a change in this file.
+//
+// Samples the film drops (not finite or negative, integrator/render.h) are counted per render
+// and shown in a red box at the top of the section (data: "dropped_samples"); the lab fails
+// the material when there are any.
 #pragma once
 
 #include <filesystem>

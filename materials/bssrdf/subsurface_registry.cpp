@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "materials/bsdf/dielectric_index_spec.h"
 #include "materials/bssrdf/measured_media.h"
 #include "materials/bssrdf/subsurface_far_field_brdf.h"
 #include "materials/registry/model_list.h"
@@ -47,6 +48,12 @@ void completeDependent(MaterialParameters& p, json& completed) {
     p.set("roughness", DefaultRoughness);
     completed["roughness"] = DefaultRoughness;
   }
+  // A rough boundary is the rough dielectric, with its index limit (dielectric_index_spec.h):
+  // refused here, when the material is read, not when a render builds the boundary.
+  if (rough && !RoughDielectricIndexRange.contains(p.number("eta")))
+    throwMaterialKeyError("eta", completed["eta"], "is outside what a rough boundary can refract through",
+                          "eta " + RoughDielectricIndexRange.describe() +
+                              " with \"boundary\": \"rough\" (or \"boundary\": \"smooth\")");
   if (!rough && p.has("roughness"))
     throwMaterialKeyError("roughness", completed["roughness"], "applies to a rough boundary only",
                           "\"roughness\" with \"boundary\": \"rough\"");
@@ -204,7 +211,8 @@ MaterialModel subsurfaceMaterialModel() {
             .range = EtaRange,
             .description =
                 "index of refraction inside relative to outside; default: the medium's (1.3, Marble 1.5), "
-                "else 1.3"},
+                "else 1.3; a rough boundary needs it " +
+                RoughDielectricIndexRange.describe()},
            {.name = "g",
             .kind = ParameterKind::Number,
             .range = ValueRange{-1.0, 1.0, true, true},
