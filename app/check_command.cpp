@@ -27,8 +27,8 @@
 #include "materials/measured/tabulated_brdf.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
-#include "validation/chi_square_images.h"
 #include "validation/check_bsdf.h"
+#include "validation/chi_square_images.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
 

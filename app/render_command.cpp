@@ -257,8 +257,8 @@ double estimateRenderSeconds(const ScenePreset preset, const std::vector<Materia
         std::max(1, PilotSide * resolution.width / std::max(resolution.width, resolution.height));
     const int height =
         std::max(1, PilotSide * resolution.height / std::max(resolution.width, resolution.height));
-    const Scene pilot = makeMaterialScene(preset, makeRenderableMaterial(material.completed), mode, lighting,
-                                          width, height);
+    const Scene pilot =
+        makeMaterialScene(preset, makeRenderableMaterial(material.completed), mode, lighting, width, height);
     RenderSettings pilotSettings = settings;
     pilotSettings.samplesPerPixel = std::min(PilotSpp, settings.samplesPerPixel);
     const auto start = std::chrono::steady_clock::now();
@@ -490,11 +490,11 @@ int runRenderCommand(const RenderCommandOptions& options) {
   const double totalSamples = double(pixels) * double(options.spp) * double(materials.size());
   constexpr double PilotAboveSamples = 5e7;  // ~10 s at a few million samples per second
   if (totalSamples > PilotAboveSamples)
-    announceWork(
-        {"render: " + std::to_string(materials.size()) + " x " + std::to_string(resolution->width) + "x" +
-             std::to_string(resolution->height) + " px x " + std::to_string(options.spp) + " spp",
-         estimateRenderSeconds(preset, materials, subsurfaceMode, lighting, *resolution, settings),
-         imageBytes(pixels, materials.size(), int(options.layers.size()), gallery)});
+    announceWork({"render: " + std::to_string(materials.size()) + " x " + std::to_string(resolution->width) +
+                      "x" + std::to_string(resolution->height) + " px x " + std::to_string(options.spp) +
+                      " spp",
+                  estimateRenderSeconds(preset, materials, subsurfaceMode, lighting, *resolution, settings),
+                  imageBytes(pixels, materials.size(), int(options.layers.size()), gallery)});
 
   // ---- Render.
   json runs = json::array();

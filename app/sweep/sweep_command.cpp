@@ -187,7 +187,9 @@ int runMergeCommand(const MergeCommandOptions& options) {
                        " is one of the sweep directories being merged; choose another");
   }
   const SweepMerge merge = mergeSweepDirectories(directories);
-  StagedDirectory staged(options.out, "results.json", "scatterlab merge", "--out");
+  std::vector<InputPath> inputs;
+  for (const fs::path& directory : directories) inputs.push_back({"sweep directory", directory});
+  StagedDirectory staged(options.out, "scatterlab merge", "--out", inputs);
   writeTextFileAtomically(staged.path() / "results.json", merge.results.dump(2) + "\n");
   writeTextFileAtomically(staged.path() / "results.csv", merge.csv);
   writeTextFileAtomically(staged.path() / "timings.json", merge.timings.dump(2) + "\n");

@@ -7,6 +7,8 @@
 #include "app/exit_code.h"
 #include "app/lab/html.h"
 #include "app/sweep/sweep_runner.h"
+#include "materials/core/bounded_file.h"
+#include "materials/core/json_text.h"
 
 namespace scatterlab {
 
@@ -16,12 +18,10 @@ using nlohmann::json;
 namespace {
 
 json readJsonFile(const fs::path& path, const std::string& what) {
-  std::ifstream in(path);
-  if (!in) throw InputError(what + ": cannot read " + path.string());
   try {
-    return json::parse(in);
-  } catch (const json::exception& error) {
-    throw InputError(what + ": " + path.string() + " is not JSON: " + error.what());
+    return parseJsonText(readFileBounded(path, MaxJsonFileBytes, "sweep file"), path.string());
+  } catch (const std::runtime_error& error) {  // InputFileError, JsonTextError
+    throw InputError(what + ": " + error.what());
   }
 }
 

@@ -18,6 +18,7 @@
 
 #include "app/exit_code.h"
 #include "materials/core/atomic_file.h"
+#include "materials/core/temporary_files.h"
 
 extern char** environ;
 
@@ -279,11 +280,16 @@ SweepRunSummary runSweepShard(const SweepSpec& sweep, const fs::path& directory,
     const fs::path staging = final.parent_path() / ("." + final.filename().string() + suffix);
     fs::remove_all(staging);
     fs::create_directories(staging);
+    TemporaryPath stagingGuard(staging);  // an interruption removes it (temporary_files.h)
     const auto start = std::chrono::steady_clock::now();
     const bool ok = runTask(sweep, task, staging);
-    // A failed record of an earlier run is replaced by this one.
-    fs::remove_all(final);
-    fs::rename(staging, final);
+    {
+      const auto deferred = deferInterruptions();
+      // A failed record of an earlier run is replaced by this one.
+      fs::remove_all(final);
+      fs::rename(staging, final);
+      stagingGuard.keep();
+    }
     ok ? ++summary.succeeded : ++summary.failed;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log << "sweep: [" << (n + 1) << "/" << pending.size() << "] task " << task.index << " "

@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "app/exit_code.h"
+#include "materials/core/bounded_file.h"
+#include "materials/core/json_text.h"
 #include "materials/core/rng.h"
 
 namespace scatterlab {
@@ -309,14 +310,9 @@ SweepSpec expandSweepSpec(const json& spec, const fs::path& baseDirectory, const
 }
 
 SweepSpec loadSweepSpec(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError("sweep spec " + file.string() + ": cannot read the file");
-  json spec;
-  try {
-    spec = json::parse(in);
-  } catch (const json::parse_error& error) {
-    throw InputError("sweep spec " + file.string() + ": not JSON: " + error.what());
-  }
+  // Bounded and depth-limited like every JSON the tool reads (json_text.h, bounded_file.h).
+  const std::string source = "sweep spec " + file.string();
+  const json spec = parseJsonText(readFileBounded(file, MaxJsonFileBytes, "sweep spec"), source);
   const fs::path base = fs::absolute(file).parent_path();
   return expandSweepSpec(spec, base, file.string());
 }

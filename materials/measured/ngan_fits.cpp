@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "materials/core/bounded_file.h"
-#include "materials/core/quoted.h"
 #include "materials/core/parse_number.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {

@@ -214,6 +214,15 @@ TEST(SweepCli, BadSpecsAreRefusedBeforeAnythingIsWritten) {
   }
 }
 
+TEST(SweepCli, ADeeplyNestedSpecIsRefusedWithoutACrash) {
+  const fs::path directory = uniquePath("sweep-deep");
+  fs::create_directories(directory);
+  const int depth = 100000;
+  std::ofstream(directory / "spec.json") << "{\"command\": \"check\", \"materials\": ["
+                                         << std::string(depth, '[') << std::string(depth, ']') << "]}";
+  expectBadInput({"sweep", (directory / "spec.json").string(), "--list"}, {"spec.json", "deep"});
+}
+
 TEST(SweepCli, ADirectoryHoldingSomethingElseIsRefusedAndLeftAlone) {
   // Another sweep's results.
   const fs::path other = uniquePath("sweep-other");
