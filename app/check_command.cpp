@@ -1,6 +1,8 @@
 #include "app/check_command.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -8,20 +10,27 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/json_output.h"
 #include "app/option_values.h"
+#include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 #include "app/render_agreement.h"
 #include "app/showcase.h"
+#include "app/staged_outputs.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
+#include "validation/check_bsdf.h"
 #include "validation/chi_square.h"
+#include "validation/chi_square_images.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
 
@@ -60,9 +69,11 @@ MaterialUnderTest prepareMaterial(std::string label, const json& material, bool 
 }
 
 // A file's material errors name the file: with several materials the user must know which.
-MaterialUnderTest prepareArgument(const std::string& argument, bool negativeControls) {
+MaterialUnderTest prepareArgument(const std::string& argument, bool negativeControls,
+                                  std::vector<InputPath>& inputs) {
   const json material = loadMaterialArgument(argument);
-  if (isInlineMaterial(argument)) return prepareMaterial(material.dump(), material, negativeControls);
+  addMaterialInputs(inputs, argument, material);
+  if (isInlineMaterial(argument)) return prepareMaterial(jsonText(material, -1), material, negativeControls);
   try {
     return prepareMaterial(argument, material, negativeControls);
   } catch (const MaterialError& error) {
@@ -81,25 +92,18 @@ void makeLabelsUnique(std::vector<MaterialUnderTest>& materials) {
   }
 }
 
-std::vector<MaterialUnderTest> prepareMaterials(const CheckCommandOptions& options) {
+std::vector<MaterialUnderTest> prepareMaterials(const CheckCommandOptions& options,
+                                                std::vector<InputPath>& inputs) {
   std::vector<MaterialUnderTest> materials;
   if (options.materials.empty()) {
     for (const ShowcaseMaterial& showcase : showcaseMaterials())
       materials.push_back(prepareMaterial(showcase.name, showcase.material, options.negativeControls));
   } else {
     for (const std::string& argument : options.materials)
-      materials.push_back(prepareArgument(argument, options.negativeControls));
+      materials.push_back(prepareArgument(argument, options.negativeControls, inputs));
   }
   makeLabelsUnique(materials);
   return materials;
-}
-
-void createImageDirectory(const std::filesystem::path& directory) {
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error)
-    throw InputError("--images: cannot create directory \"" + directory.string() + "\" (" + error.message() +
-                     "); allowed: a directory, or a path where one can be created");
 }
 
 CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOptions& kit,
@@ -112,11 +116,47 @@ CheckReport checkMaterial(const MaterialUnderTest& material, const BsdfCheckOpti
                                                   subsurfaceCheckOptions(kit), progress));
     return report;
   }
-  CheckReport report = runBsdfChecks(*material.model, material.label, kit, progress);
-  if (negativeControls)
-    report.append(runNegativeControls(*material.model, material.roughnessMismatchSampler.get(),
-                                      material.label, kit, progress));
-  return report;
+  return checkBsdf(*material.model, {.kit = kit,
+                                     .negativeControls = negativeControls,
+                                     .roughnessMismatchSampler = material.roughnessMismatchSampler.get(),
+                                     .label = material.label,
+                                     .progress = progress});
+}
+
+// `kit` as run; the images are reported where they end up (options), not where they were staged.
+// The run's wall time and memory, from a pilot of each material: the kit with its samples
+// and its cells both k times fewer at one incident angle (the kit's cost is linear in both),
+// timed, times k and the number of angles. Only for runs that could last minutes.
+WorkEstimate estimateCheck(const std::vector<MaterialUnderTest>& materials, const BsdfCheckOptions& kit,
+                           bool negativeControls) {
+  const double angles = double(kit.wiThetaDeg.size());
+  const double cells = double(kit.thetaBins) * double(kit.phiBins);
+  WorkEstimate estimate{"check: " + std::to_string(materials.size()) + " material(s), " +
+                            std::to_string(kit.samples) + " samples on a " + std::to_string(kit.thetaBins) +
+                            "x" + std::to_string(kit.phiBins) + " grid per test",
+                        0.0,
+                        // Per worker thread: the histogram and the expected counts, 8 bytes a cell each,
+                        // plus the process itself.
+                        30e6 + 16.0 * cells * double(std::max(1u, std::thread::hardware_concurrency()))};
+  constexpr double PilotAboveWork = 5e7;  // samples (or 100 x cells) per run: about ten seconds
+  const double work = double(materials.size()) * angles * (negativeControls ? 5.0 : 1.0) *
+                      (double(kit.samples) + 100.0 * cells);
+  if (work < PilotAboveWork) return estimate;
+  constexpr double PilotSamples = 2e4, PilotCells = 512;
+  const double k = std::max({1.0, double(kit.samples) / PilotSamples, cells / PilotCells});
+  BsdfCheckOptions pilot = kit;
+  pilot.samples = std::max<size_t>(1000, size_t(double(kit.samples) / k));
+  pilot.thetaBins = std::max(MinGridCells, int(kit.thetaBins / std::sqrt(k)));
+  pilot.phiBins = std::max(MinGridCells, int(kit.phiBins / std::sqrt(k)));
+  pilot.wiThetaDeg = {kit.wiThetaDeg.front()};
+  pilot.imageDir.reset();
+  for (const MaterialUnderTest& material : materials) {
+    const auto start = std::chrono::steady_clock::now();
+    checkMaterial(material, pilot, negativeControls, {});
+    estimate.seconds +=
+        k * angles * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return estimate;
 }
 
 json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit) {
@@ -129,7 +169,7 @@ json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit
           {"chi_square_test_count", kit.chiSquareTestCount},
           {"negative_controls", options.negativeControls},
           {"render_agreement_spp", options.renderAgreementSpp ? json(*options.renderAgreementSpp) : json()},
-          {"images", kit.imageDir ? json(kit.imageDir->string()) : json()}};
+          {"images", options.kit.imageDir ? json(options.kit.imageDir->string()) : json()}};
 }
 
 // A measured table's missing cells (negative in the file), which the fill rule of
@@ -151,19 +191,18 @@ void printJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit,
                       {"materials", std::move(materialsJson)},
                       {"report", toJson(report)},
                       {"passed", report.passed()}};
-  std::cout << document.dump(2) << "\n";
+  std::cout << jsonText(document) << "\n";
 }
 
 void printText(const std::vector<MaterialUnderTest>& materials, const CheckReport& report) {
   std::cout << "materials (every default filled in):\n";
   for (const MaterialUnderTest& material : materials) {
-    std::cout << "  " << material.label << " = " << material.completed.dump() << "\n";
+    std::cout << "  " << material.label << " = " << jsonText(material.completed, -1) << "\n";
     if (const auto missing = missingCellsOf(material.model.get()); missing && *missing > 0)
       std::cout << "    " << *missing << " of " << merl::CellCount
                 << " cells missing in the file, filled from the nearest measured cell along theta_d\n";
   }
-  std::cout << formatTable(report);
-  std::cout << "verdict: " << (report.passed() ? "PASS" : "FAIL") << "\n";
+  std::cout << formatVerdict(report);
 }
 
 }  // namespace
@@ -194,7 +233,8 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
   BsdfCheckOptions& kit = options.kit;
   command->add_option(
       "material", options.materials,
-      "Materials: inline JSON ('{\"type\": \"conductor\"}') or JSON files; none: a built-in showcase");
+      "Materials: inline JSON ('{\"type\": \"conductor\"}'), JSON files or MERL .binary files; "
+      "none: a built-in showcase");
   // One value per --wi-theta, split at commas, so that the materials after it stay positional.
   command->add_option("--wi-theta", kit.wiThetaDeg, "Incident polar angles in degrees, comma-separated")
       ->type_name("DEGREES")
@@ -249,6 +289,7 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
       ->transform(integerIn(MinRenderSpp, MaxRenderSpp));
   command->add_flag("--json", options.json,
                     "Print one JSON document: completed materials, every row, the verdict");
+  addPluginOption(*command);
   return command;
 }
 
@@ -256,7 +297,8 @@ int runCheckCommand(const CheckCommandOptions& options) {
   if (options.kit.wiThetaDeg.empty())
     throw InputError(
         "--wi-theta: no angle given; allowed: degrees in [0, 90), comma-separated, e.g. 0,30,60,85,89");
-  const std::vector<MaterialUnderTest> materials = prepareMaterials(options);
+  std::vector<InputPath> inputs;
+  const std::vector<MaterialUnderTest> materials = prepareMaterials(options, inputs);
 
   BsdfCheckOptions kit = options.kit;
   kit.chiSquareTestCount = 0;
@@ -274,8 +316,16 @@ int runCheckCommand(const CheckCommandOptions& options) {
         "--render-agreement: no BSDF material given; allowed: BSDF materials (subsurface "
         "materials are rendered by the path tracer only, so they have no adjoint to compare)");
   kit.chiSquareTestCount += RenderAgreementTestsPerMaterial * int(renderedMaterials);
-  if (kit.imageDir) createImageDirectory(*kit.imageDir);
+  // The images are written into a staging directory and moved into --images DIR at the end
+  // (staged_outputs.h): an interrupted or failed check leaves DIR as it was.
+  StagedOutputs outputs(inputs);
+  if (kit.imageDir) {
+    outputs.addDirectory("--images", *kit.imageDir, chiSquareImageSuffixes());
+    outputs.prepare();
+    kit.imageDir = outputs.staged(*options.kit.imageDir);
+  }
 
+  announceWork(estimateCheck(materials, kit, options.negativeControls));
   CheckReport report;
   {
     ProgressLine progress;
@@ -305,6 +355,7 @@ int runCheckCommand(const CheckCommandOptions& options) {
       report.append(renderAgreementReport(material.label, agreement, threshold));
     }
   }
+  if (kit.imageDir) outputs.commit();
   if (options.json)
     printJson(options, kit, materials, report);
   else

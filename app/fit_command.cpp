@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -10,12 +11,17 @@
 
 #include "app/exit_code.h"
 #include "app/fit_verdict.h"
+#include "app/json_output.h"
 #include "app/option_values.h"
+#include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
+#include "app/staged_outputs.h"
 #include "app/synth_command.h"
 #include "fitting/brdf_fit.h"
 #include "fitting/material_writer.h"
 #include "materials/core/atomic_file.h"
+#include "materials/core/quoted.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
 #include "materials/registry/material_file.h"
@@ -27,8 +33,6 @@ namespace {
 
 using nlohmann::json;
 using namespace fitting;
-
-std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 std::string format(const char* pattern, double value) {
   char text[64];
@@ -48,7 +52,9 @@ struct LoadedData {
 };
 
 // A material tabulated in the MERL layout (no perturbation), or a MERL file; its usable cells.
-LoadedData loadData(const std::string& data, int threads, ProgressLine& progress) {
+// `claimOutputs` runs once the data is known to be valid, before the tabulation.
+LoadedData loadData(const std::string& data, int threads, ProgressLine& progress,
+                    const std::function<void()>& claimOutputs) {
   LoadedData loaded;
   MerlTable table;
   if (isMaterialData(data)) {
@@ -60,8 +66,9 @@ LoadedData loadData(const std::string& data, int threads, ProgressLine& progress
       if (isInlineMaterial(data)) throw;
       throw MaterialError("material file " + inQuotes(data) + ": " + error.what());
     }
-    loaded.label = isInlineMaterial(data) ? material.dump() : data;
+    loaded.label = isInlineMaterial(data) ? jsonText(material, -1) : data;
     loaded.kind = "material";
+    claimOutputs();
     const MeasurementSynthesizer synthesizer({model.get()}, MeasurementPerturbation{});
     table = synthesizeTable(synthesizer, threads, progress.callback("tabulating"));
   } else {
@@ -75,6 +82,7 @@ LoadedData loadData(const std::string& data, int threads, ProgressLine& progress
     }
     loaded.label = data;
     loaded.kind = "merl";
+    claimOutputs();
   }
   loaded.samples = samplesFromMerl(table, &loaded.counts);
   if (loaded.samples.empty())
@@ -142,7 +150,7 @@ void printReport(const FitCommandOptions& options, const LoadedData& data, const
     std::printf("%-8c %14.6g %16.4g\n", "rgb"[c], result.rms[c], result.relativeError[c]);
   std::printf("\nverdict: %s\n", verdict.good ? "GOOD" : "POOR");
   for (const std::string& problem : verdict.problems) std::printf("  %s\n", problem.c_str());
-  if (written.material) std::printf("material: %s\n", written.material->dump().c_str());
+  if (written.material) std::printf("material: %s\n", jsonText(*written.material, -1).c_str());
   if (!writtenPath.empty())
     std::printf("wrote %s\n", writtenPath.c_str());
   else if (!options.out.empty())
@@ -230,6 +238,7 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
                    "Write the fitted material (registry JSON) here, atomically, if the fit is good")
       ->type_name("FILE");
   command->add_flag("--json", options.json, "Print the whole report as JSON");
+  addPluginOption(*command);
   return command;
 }
 
@@ -247,13 +256,23 @@ int runFitCommand(const FitCommandOptions& options) {
   } catch (const MaterialError& error) {
     throw MaterialError(std::string("--model: ") + error.what());
   }
-  if (!options.out.empty()) checkOutputFile("--out", options.out, "fit.json");
   FitOptions fitOptions = fitOptionsOf(options);
   if (fitOptions.robust == RobustLoss::None && options.robustScale)
     throw InputError("--robust-scale: only applies with --robust huber, cauchy or soft-l1");
 
+  // The output is checked against the data now, and claimed before the tabulation or fit.
+  std::vector<InputPath> inputs;
+  if (isMaterialData(options.data))
+    addMaterialInputs(inputs, options.data, loadMaterialArgument(options.data));
+  else
+    inputs.push_back({"data file", options.data});
+  StagedOutputs outputs(inputs);
+  if (!options.out.empty()) outputs.addFile("--out", options.out, "fit.json");
+  // A plugin model without a fit kernel is differentiated numerically: say so before the work.
+  for (const std::string& note : model->derivativeNotes()) std::cerr << "scatterlab: note: " << note << "\n";
+
   ProgressLine progress;
-  const LoadedData data = loadData(options.data, options.threads, progress);
+  const LoadedData data = loadData(options.data, options.threads, progress, [&] { outputs.prepare(); });
   const BrdfSamples samples = stratifiedSubset(data.samples, options.samples, options.seed);
   fitOptions.progress = progress.callback("fit");
   const FitResult result = fitBrdf(*model, samples, fitOptions);
@@ -263,7 +282,8 @@ int runFitCommand(const FitCommandOptions& options) {
   const FitVerdict verdict = judgeFit(result, written, options.maxRelativeError);
   std::string writtenPath;
   if (verdict.good && !options.out.empty()) {
-    writeTextFileAtomically(options.out, written.material->dump(2) + "\n");
+    writeTextFileAtomically(outputs.staged(options.out), written.material->dump(2) + "\n");
+    outputs.commit();
     writtenPath = options.out;
   }
   if (options.json) {
@@ -277,13 +297,14 @@ int runFitCommand(const FitCommandOptions& options) {
                 {"components", components},
                 {"lobes", options.lobes},
                 {"per_channel", options.perChannel},
+                {"derivative_notes", model->derivativeNotes()},
                 {"fit", toJson(result, *model, fitOptions)},
                 {"material", written.material ? *written.material : json()},
                 {"material_problem", written.problem},
                 {"verdict", verdict.good ? "good" : "poor"},
                 {"problems", verdict.problems},
                 {"written", writtenPath.empty() ? json() : json(writtenPath)}};
-    std::cout << report.dump(2) << "\n";
+    std::cout << jsonText(report) << "\n";
   } else {
     printReport(options, data, result, written, verdict, writtenPath);
   }

@@ -29,6 +29,12 @@ FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMate
       fail(std::string("relative error of channel ") + "rgb"[c] + " " +
            format("%.3g", result.relativeError[c]) + " exceeds --max-relative-error " +
            format("%g", maxRelativeError));
+  if (result.rankDeficient) {
+    std::string directions;
+    for (const std::string& d : result.unidentified) directions += (directions.empty() ? "" : "; ") + d;
+    fail("rank deficient: the data cannot determine " +
+         (directions.empty() ? "some parameters" : directions));
+  }
   if (!written.material) fail("no registry material: " + written.problem);
   return verdict;
 }

@@ -9,6 +9,7 @@
 
 #include "app/exit_code.h"
 #include "app/progress.h"
+#include "app/staged_outputs.h"
 #include "materials/bsdf/white_microfacet_albedo.h"
 #include "materials/core/atomic_file.h"
 
@@ -96,18 +97,15 @@ CLI::App* addGenerateTableCommand(CLI::App& app, GenerateTableOptions& options) 
   command->add_option("table", options.table, "Which table")
       ->required()
       ->check(CLI::IsMember(generatedTableNames()));
-  command->add_option("--output", options.output, "The C++ source file to write (its directory must exist)")
-      ->required();
+  command->add_option("--out,--output", options.output, "The C++ source file to write")->required();
   return command;
 }
 
 int runGenerateTableCommand(const GenerateTableOptions& options) {
   const std::filesystem::path output(options.output);
-  const std::filesystem::path directory = output.has_parent_path() ? output.parent_path() : ".";
-  if (!std::filesystem::is_directory(directory))
-    throw InputError("--output: directory \"" + directory.string() +
-                     "\" does not exist; allowed: a file in an "
-                     "existing directory");
+  StagedOutputs outputs;
+  outputs.addFile("--out", output, "materials/bsdf/tables/white_microfacet_albedo_table.cpp");
+  outputs.prepare();
   ProgressLine progress;
   std::atomic<int> done{0};
   const std::vector<double> ggx =
@@ -115,8 +113,9 @@ int runGenerateTableCommand(const GenerateTableOptions& options) {
   const std::vector<double> beckmann =
       computeWhiteAlbedoTable(MicrofacetType::Beckmann, done, progress, "GGX and Beckmann");
   progress.clear();
-  const std::string command = "scatterlab generate-table " + options.table + " --output " + options.output;
-  writeTextFileAtomically(output, whiteAlbedoTableSource(ggx, beckmann, command));
+  const std::string command = "scatterlab generate-table " + options.table + " --out " + options.output;
+  writeTextFileAtomically(outputs.staged(output), whiteAlbedoTableSource(ggx, beckmann, command));
+  outputs.commit();
   std::cerr << "wrote " << output.string() << "\n";
   return static_cast<int>(ExitCode::Success);
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/exit_code.h"
+#include "app/plugin_option.h"
 #include "materials/registry/model_list.h"
 
 namespace scatterlab {
@@ -47,6 +48,7 @@ std::string formatAlternatives(const MaterialModel& model) {
 std::string formatModel(const MaterialModel& model) {
   std::string out = model.type + ": " + model.description + "\n";
   out += "  citation: " + model.citation + "\n";
+  if (!model.plugin.empty()) out += "  plugin: " + model.plugin + "\n";
   std::vector<TableRow> rows{{"parameter", "kind", "default", "allowed", "description"}};
   for (const ParameterSpec& spec : model.parameters)
     rows.push_back(
@@ -148,6 +150,7 @@ CLI::App* addModelsCommand(CLI::App& app, ModelsCommandOptions& options) {
       ->add_flag("--markdown", options.markdown,
                  "Print the catalog as Markdown (the page committed as docs/models.md)")
       ->excludes(json);
+  addPluginOption(*command);
   return command;
 }
 

@@ -8,12 +8,11 @@
 #include <optional>
 
 #include "app/exit_code.h"
+#include "materials/core/quoted.h"
 
 namespace scatterlab {
 
 namespace {
-
-std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 // The whole of `text` as a number of type T, or nothing (no partial parses: "12abc" is not 12).
 template <typename T> std::optional<T> parseWhole(const std::string& text) {

@@ -7,9 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/json_output.h"
 #include "app/option_values.h"
 #include "app/profile_annuli.h"
 #include "app/progress.h"
+#include "app/walk_estimate.h"
 #include "materials/bssrdf/annulus_profile.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
 #include "materials/bssrdf/subsurface_registry.h"
@@ -36,7 +38,7 @@ struct LoadedMaterial {
 LoadedMaterial loadSubsurface(const std::string& argument) {
   const json description = loadMaterialArgument(argument);
   try {
-    return {isInlineMaterial(argument) ? description.dump() : argument, completeMaterial(description),
+    return {isInlineMaterial(argument) ? jsonText(description, -1) : argument, completeMaterial(description),
             makeSubsurface(description)};
   } catch (const MaterialError& error) {
     if (isInlineMaterial(argument)) throw;
@@ -47,10 +49,20 @@ LoadedMaterial loadSubsurface(const std::string& argument) {
 // Annuli from 0: [0, min], then log-spaced to max. By default max is where every reflecting
 // channel holds 99.9% of its profile, and min a thousandth of it.
 std::vector<double> radiusEdges(const ProfileCommandOptions& options, const RadialProfile& profile) {
-  const double maxRadius = options.maxRadius.value_or(profileExtent(profile));
+  const double extent = profileExtent(profile);
+  // Without --min-radius and --max-radius the annuli come from the profile: one that reflects
+  // nothing has none, which is the material's doing, not an option's.
+  if (!options.maxRadius && !(extent > 0.0 && std::isfinite(extent)))
+    throw MaterialError("material: the profile reflects nothing to tabulate (total diffuse reflectance " +
+                        std::to_string(profile.totalReflectance()[0]) + ", " +
+                        std::to_string(profile.totalReflectance()[1]) + ", " +
+                        std::to_string(profile.totalReflectance()[2]) +
+                        "); allowed: a medium that reflects in some channel, or --max-radius MM");
+  const double maxRadius = options.maxRadius.value_or(extent);
   const double minRadius = options.minRadius.value_or(1e-3 * maxRadius);
   if (!(minRadius < maxRadius))
-    throw InputError("--min-radius: " + std::to_string(minRadius) + " mm is not below the largest radius " +
+    throw InputError(std::string(options.minRadius ? "--min-radius: " : "--max-radius: ") +
+                     std::to_string(minRadius) + " mm is not below the largest radius " +
                      std::to_string(maxRadius) + " mm; allowed: 0 < --min-radius < --max-radius");
   return logRadiusEdges(minRadius, maxRadius, options.bins);
 }
@@ -115,7 +127,7 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
                const std::vector<std::vector<double>>& means,
                const std::vector<std::optional<ChannelWalk>>& walks) {
   const RadialProfile& profile = *loaded.material.profile;
-  std::cout << "material (every default filled in): " << loaded.completed.dump() << "\n";
+  std::cout << "material (every default filled in): " << jsonText(loaded.completed, -1) << "\n";
   std::cout << "profile " << profile.name() << ", eta " << loaded.material.medium.eta
             << "; lengths in mm, R in mm^-2\n\n";
   std::cout << "channel  total diffuse reflectance";
@@ -155,6 +167,20 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
   }
 }
 
+// Walk paths whose position stopped being finite (half_space_walk.h) are named on stderr and
+// fail the command (exit 1) after its output is written.
+int nonFiniteWalkStatus(const std::vector<const HalfSpaceWalkResult*>& walks) {
+  uint64_t nonFinite = 0, paths = 0;
+  for (const HalfSpaceWalkResult* w : walks) {
+    nonFinite += w->nonFinite;
+    paths += w->settings.paths;
+  }
+  if (nonFinite == 0) return static_cast<int>(ExitCode::Success);
+  std::cerr << "profile: " << nonFinite << " of " << paths
+            << " walk paths stopped being finite; they are left out of every tally\n";
+  return static_cast<int>(ExitCode::CheckFailed);
+}
+
 json walkJson(const ChannelWalk& walk) {
   const HalfSpaceWalkResult& r = walk.result;
   json out{{"albedo", r.settings.albedo},
@@ -166,6 +192,7 @@ json walkJson(const ChannelWalk& walk) {
            {"total_reflectance", r.totalReflectance},
            {"std_error", r.totalStdError},
            {"truncated_paths", r.truncated},
+           {"non_finite_paths", r.nonFinite},
            {"mean_scattering_events", double(r.scatteringEvents) / double(r.settings.paths)},
            {"profile", r.profile},
            {"profile_std_error", r.profileStdError}};
@@ -186,7 +213,7 @@ std::string column(const std::string& text, int width) {
 
 void printComparison(const LoadedMaterial& loaded, const ProfileComparison& comparison) {
   const ScatteringMedium& m = comparison.medium;
-  std::cout << "material (every default filled in): " << loaded.completed.dump() << "\n";
+  std::cout << "material (every default filled in): " << jsonText(loaded.completed, -1) << "\n";
   std::cout << "medium: sigma_s " << fixed("%.4g", m.sigmaS.x) << " " << fixed("%.4g", m.sigmaS.y) << " "
             << fixed("%.4g", m.sigmaS.z) << ", sigma_a " << fixed("%.4g", m.sigmaA.x) << " "
             << fixed("%.4g", m.sigmaA.y) << " " << fixed("%.4g", m.sigmaA.z) << " mm^-1, g " << m.g
@@ -230,7 +257,8 @@ json comparisonJson(const LoadedMaterial& loaded, const ProfileComparison& compa
                      {"total_reflectance", w.totalReflectance},
                      {"std_error", w.totalStdError},
                      {"single_scattering", w.singleReflectance},
-                     {"single_scattering_std_error", w.singleStdError}});
+                     {"single_scattering_std_error", w.singleStdError},
+                     {"non_finite_paths", w.nonFinite}});
   json models = json::array();
   for (const ModelComparison& model : comparison.models)
     models.push_back({{"model", toString(model.model)},
@@ -265,15 +293,23 @@ int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& lo
   compare.threads = options.threads;
   compare.annuli = options.bins;
   compare.burleyFit = loaded.material.burleyFit;
+  std::vector<HalfSpaceWalkSettings> channels;  // the walks' cost does not depend on the annuli
+  for (int c = 0; c < 3; ++c)
+    channels.push_back(mediumWalkSettings(loaded.material.medium, c, {0.0, 1.0}, options.paths, options.seed,
+                                          options.threads));
+  announceWork(
+      estimateWalks("profile --compare: 3 walks of " + std::to_string(options.paths) + " paths", channels));
   ProgressLine progress;
   const ProfileComparison comparison =
       compareProfilesWithWalk(loaded.material.medium, compare, progress.walkCallback("walk"));
   progress.clear();
   if (options.json)
-    std::cout << comparisonJson(loaded, comparison).dump(2) << "\n";
+    std::cout << jsonText(comparisonJson(loaded, comparison)) << "\n";
   else
     printComparison(loaded, comparison);
-  return static_cast<int>(ExitCode::Success);
+  std::vector<const HalfSpaceWalkResult*> walks;
+  for (const HalfSpaceWalkResult& w : comparison.walks) walks.push_back(&w);
+  return nonFiniteWalkStatus(walks);
 }
 
 }  // namespace
@@ -343,9 +379,12 @@ int runProfileCommand(const ProfileCommandOptions& options) {
   for (int c = 0; c < 3; ++c) means.push_back(annulusMeans(profile, c, edges));
   std::vector<std::optional<ChannelWalk>> walks(3);
   if (options.reference == "walk") {
+    std::vector<HalfSpaceWalkSettings> channels;
+    for (int c = 0; c < 3; ++c) channels.push_back(walkSettings(options, loaded.material.medium, c, edges));
+    announceWork(estimateWalks("profile: 3 walks of " + std::to_string(options.paths) + " paths", channels));
     ProgressLine progress;
     for (int c = 0; c < 3; ++c) {
-      const HalfSpaceWalkSettings settings = walkSettings(options, loaded.material.medium, c, edges);
+      const HalfSpaceWalkSettings& settings = channels[size_t(c)];
       ChannelWalk walk{
           simulateHalfSpace(settings, progress.walkCallback(std::string("walk ") + ChannelNames[c])),
           std::nullopt};
@@ -355,9 +394,12 @@ int runProfileCommand(const ProfileCommandOptions& options) {
     }
   }
 
+  std::vector<const HalfSpaceWalkResult*> walkResults;
+  for (const std::optional<ChannelWalk>& walk : walks)
+    if (walk) walkResults.push_back(&walk->result);
   if (!options.json) {
     printText(loaded, edges, means, walks);
-    return static_cast<int>(ExitCode::Success);
+    return nonFiniteWalkStatus(walkResults);
   }
   json channels = json::array();
   for (int c = 0; c < 3; ++c) {
@@ -379,8 +421,8 @@ int runProfileCommand(const ProfileCommandOptions& options) {
                       {"units", "lengths mm, coefficients mm^-1, R mm^-2 (averaged over each annulus)"},
                       {"radius_edges", edges},
                       {"channels", std::move(channels)}};
-  std::cout << document.dump(2) << "\n";
-  return static_cast<int>(ExitCode::Success);
+  std::cout << jsonText(document) << "\n";
+  return nonFiniteWalkStatus(walkResults);
 }
 
 }  // namespace scatterlab

@@ -1,8 +1,7 @@
 #include "app/render_command.h"
 
-#include <unistd.h>
-
 #include <charconv>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -12,7 +11,10 @@
 
 #include "app/exit_code.h"
 #include "app/option_values.h"
+#include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
+#include "app/staged_outputs.h"
 #include "integrator/contact_sheet.h"
 #include "integrator/environment_map_file.h"
 #include "integrator/exr_io.h"
@@ -23,6 +25,7 @@
 #include "integrator/scene_presets.h"
 #include "integrator/silhouette_mask.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
 
@@ -33,7 +36,21 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
+// A render whose film dropped samples (not finite, or negative: render.h) has written its
+// images, with those samples as 0, and fails: exit 1, as a material that fails a check.
+int droppedSampleStatus(uint64_t droppedSamples) {
+  return static_cast<int>(droppedSamples == 0 ? ExitCode::Success : ExitCode::CheckFailed);
+}
+
+// The line that names what the film dropped, for stderr; empty when nothing was.
+std::string droppedSampleMessage(const std::string& label, const RenderStatistics& stats) {
+  if (stats.droppedSamples() == 0) return "";
+  return "render: " + label + ": " + std::to_string(stats.droppedSamples()) + " of " +
+         std::to_string(stats.samples) + " samples dropped (" + std::to_string(stats.nonFiniteSamples) +
+         " not finite, " + std::to_string(stats.negativeSamples) +
+         " negative): the material returned values that no light transport produces; they count as 0 "
+         "in the image\n";
+}
 
 std::optional<int> parsePositive(const std::string& text) {
   int value = 0;
@@ -68,8 +85,9 @@ std::string defaultLabel(const std::string& argument, const json& material) {
   return material.value("type", std::string("material"));
 }
 
-MaterialToRender loadMaterial(const std::string& argument) {
+MaterialToRender loadMaterial(const std::string& argument, std::vector<InputPath>& inputs) {
   const json material = loadMaterialArgument(argument);
+  addMaterialInputs(inputs, argument, material);
   try {
     return {defaultLabel(argument, material), completeMaterial(material), makeRenderableMaterial(material)};
   } catch (const MaterialError& error) {
@@ -165,20 +183,39 @@ struct OutputPaths {
   fs::path exr, png;
 };
 
-// PREFIX.exr and PREFIX.png, neither a directory, in an existing, writable directory.
-OutputPaths checkOutput(const std::string& prefix) {
-  if (prefix.empty()) throw InputError("--out: missing; allowed: a path prefix, e.g. out/gold");
+// PREFIX.exr and PREFIX.png, staged together (staged_outputs.h).
+OutputPaths addOutputs(StagedOutputs& outputs, const std::string& prefix) {
+  const std::string example = "out/gold (for out/gold.exr and out/gold.png)";
+  if (prefix.empty()) throw InputError("--out: missing; allowed: a path prefix, e.g. " + example);
+  if (prefix.back() == '/')
+    throw InputError("--out: " + inQuotes(prefix) + " ends in '/'; allowed: a path prefix, e.g. " + example);
+  // A device given as the prefix (/dev/null) is no place for two files beside it.
+  std::error_code error;
+  const fs::file_status status = fs::status(prefix, error);
+  if (fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status))
+    throw InputError("--out: " + inQuotes(prefix) +
+                     " is a device, pipe or socket; allowed: a path prefix, e.g. " + example);
   OutputPaths paths{fs::path(prefix + ".exr"), fs::path(prefix + ".png")};
-  checkOutputFile("--out", paths.exr.string(), "out/gold (for out/gold.exr and out/gold.png)");
-  checkOutputFile("--out", paths.png.string(), "out/gold (for out/gold.exr and out/gold.png)");
-  const fs::path directory = paths.exr.parent_path().empty() ? fs::path(".") : paths.exr.parent_path();
-  if (::access(directory.c_str(), W_OK) != 0)
-    throw InputError("--out: directory " + inQuotes(directory.string()) +
-                     " is not writable; allowed: a writable directory");
+  outputs.addFile("--out", paths.exr, example);
+  outputs.addFile("--out", paths.png, example);
   return paths;
 }
 
+// Memory of the images the run holds: each material's colour (and layers) until the end, and
+// a gallery's sheet; 12 bytes per RGB float pixel, plus the PNG's 3.
+double imageBytes(int64_t pixels, size_t materials, int layers, bool gallery) {
+  const double perPixel = 12.0 * (1 + layers);
+  return double(pixels) * (double(materials) * perPixel + (gallery ? 12.0 : 0.0) + 3.0);
+}
+
+// Why a region can be empty: silhouette_mask.h counts a pixel only 3 pixel widths inside
+// (sphere) or outside (background) the silhouette, which a tiny image has none of.
+constexpr const char* EmptyRegionNote =
+    "no pixel lies 3 pixel widths inside it (pixels near the silhouette count for neither region)";
+
+// An empty region has no mean: null, and why.
 json statisticsJson(const RegionStatistics& s) {
+  if (s.pixels == 0) return {{"n", 0}, {"mean", nullptr}, {"note", EmptyRegionNote}};
   return {{"n", s.pixels},
           {"mean_rgb", {s.meanRgb.x, s.meanRgb.y, s.meanRgb.z}},
           {"std_rgb", {s.stdRgb.x, s.stdRgb.y, s.stdRgb.z}},
@@ -195,21 +232,44 @@ std::string progressBar(double fraction) {
   return "[" + std::string(size_t(filled), '#') + std::string(size_t(Width - filled), '.') + "]";
 }
 
-// Writes both files or neither: the PNG's failure removes the EXR just written.
-void writeBoth(const OutputPaths& paths, const std::vector<ExrLayer>& layers, const Image& color,
-               double exposure) {
+// Writes both files into their temporaries, then puts both in place: a failed write leaves
+// the previous pair as it was (staged_outputs.h).
+void writeBoth(StagedOutputs& outputs, const OutputPaths& paths, const std::vector<ExrLayer>& layers,
+               const Image& color, double exposure) {
   try {
-    writeExr(paths.exr, layers);
-    try {
-      writePngSrgb(paths.png, color, exposure);
-    } catch (...) {
-      std::error_code ignored;
-      fs::remove(paths.exr, ignored);
-      throw;
-    }
+    writeExr(outputs.staged(paths.exr), layers);
+    writePngSrgb(outputs.staged(paths.png), color, exposure);
   } catch (const RenderInputError& error) {
     throw InputError(std::string("--out: ") + error.what());
   }
+  outputs.commit();
+}
+
+// The run's wall time, from a pilot of each material: a small image with few samples per
+// pixel, timed, scaled to the full image and sample count. Only for runs that could be long.
+double estimateRenderSeconds(const ScenePreset preset, const std::vector<MaterialToRender>& materials,
+                             SubsurfaceMode mode, const PresetLighting& lighting,
+                             const Resolution& resolution, const RenderSettings& settings) {
+  constexpr int PilotSide = 24, PilotSpp = 4;
+  double seconds = 0.0;
+  for (const MaterialToRender& material : materials) {
+    const int width =
+        std::max(1, PilotSide * resolution.width / std::max(resolution.width, resolution.height));
+    const int height =
+        std::max(1, PilotSide * resolution.height / std::max(resolution.width, resolution.height));
+    const Scene pilot =
+        makeMaterialScene(preset, makeRenderableMaterial(material.completed), mode, lighting, width, height);
+    RenderSettings pilotSettings = settings;
+    pilotSettings.samplesPerPixel = std::min(PilotSpp, settings.samplesPerPixel);
+    const auto start = std::chrono::steady_clock::now();
+    render(pilot, pilotSettings);
+    const double pilotSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double scale = double(resolution.width) * resolution.height * settings.samplesPerPixel /
+                         (double(width) * height * pilotSettings.samplesPerPixel);
+    seconds += pilotSeconds * scale;
+  }
+  return seconds;
 }
 
 }  // namespace
@@ -231,7 +291,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       "materials make a labelled contact sheet (gallery)");
   command
       ->add_option("material", options.materials,
-                   "Material(s): inline JSON or JSON files; several: a gallery")
+                   "Material(s): inline JSON, JSON files or MERL .binary files; several: a gallery")
       ->required();
   command
       ->add_option("--integrator", options.integrator,
@@ -353,6 +413,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->required();
   command->add_flag("--json", options.json,
                     "Print the run (settings, timings, sphere and background means) as JSON");
+  addPluginOption(*command);
   return command;
 }
 
@@ -380,18 +441,30 @@ int runRenderCommand(const RenderCommandOptions& options) {
                      " materials; allowed: one label per material");
   if (gallery && !options.layers.empty())
     throw InputError("--layers: only with a single material; a gallery writes the colour sheet alone");
+  // A gallery renders every sphere at --res: all of them count against the pixel limit.
+  const int64_t pixels = int64_t(resolution->width) * resolution->height;
+  if (pixels * int64_t(options.materials.size()) > MaxImagePixels)
+    throw InputError("--res: " + std::to_string(options.materials.size()) + " materials x " +
+                     std::to_string(resolution->width) + "x" + std::to_string(resolution->height) + " = " +
+                     std::to_string(pixels * int64_t(options.materials.size())) +
+                     " pixels; allowed: at most " + std::to_string(MaxImagePixels) +
+                     " pixels in all (a gallery renders each material at --res)");
+  std::vector<InputPath> inputs;
   std::vector<MaterialToRender> materials;
   for (size_t i = 0; i < options.materials.size(); ++i) {
-    materials.push_back(loadMaterial(options.materials[i]));
+    materials.push_back(loadMaterial(options.materials[i], inputs));
     if (!options.labels.empty()) materials.back().label = options.labels[i];
     if (integrator != IntegratorKind::Path && materials.back().material.subsurface)
       throw InputError("material " + inQuotes(options.materials[i]) +
                        ": a subsurface material (a BSSRDF), which --integrator " + options.integrator +
                        " does not render; allowed: --integrator path, or a BSDF");
   }
+  if (const std::string env = environmentChoice(options, preset); env != "white" && env != "none")
+    inputs.push_back({"environment map (--env)", env});
   LoadedEnvironment loaded = loadEnvironment(options, preset);
   const PresetLighting lighting = lightingOf(options, preset, std::move(loaded.environment));
-  const OutputPaths paths = checkOutput(options.out);
+  StagedOutputs outputs(inputs);
+  const OutputPaths paths = addOutputs(outputs, options.out);
 
   const SubsurfaceMode subsurfaceMode = *findSubsurfaceMode(options.subsurface);
 
@@ -411,8 +484,23 @@ int runRenderCommand(const RenderCommandOptions& options) {
     settings.varianceLayer |= layer == "variance";
   }
 
+  // ---- Claim the outputs (nothing is written before this point: an unwritable one is bad
+  // input now, not after the work), then announce long work.
+  outputs.prepare();
+  const double totalSamples = double(pixels) * double(options.spp) * double(materials.size());
+  constexpr double PilotAboveSamples = 5e7;  // ~10 s at a few million samples per second
+  if (totalSamples > PilotAboveSamples)
+    announceWork({"render: " + std::to_string(materials.size()) + " x " + std::to_string(resolution->width) +
+                      "x" + std::to_string(resolution->height) + " px x " + std::to_string(options.spp) +
+                      " spp",
+                  estimateRenderSeconds(preset, materials, subsurfaceMode, lighting, *resolution, settings),
+                  imageBytes(pixels, materials.size(), int(options.layers.size()), gallery)});
+
   // ---- Render.
   json runs = json::array();
+  // Samples the film dropped (not finite, or negative: render.h); any fails the command.
+  uint64_t droppedSamples = 0;
+  std::string droppedMessages;  // printed once the progress line is gone
   std::vector<RenderResult> results;
   {
     ProgressLine progress;
@@ -434,7 +522,11 @@ int runRenderCommand(const RenderCommandOptions& options) {
                {"vertices", stats.vertices},
                {"samples_per_second", double(stats.samples) / stats.seconds},
                {"vertices_per_second", double(stats.vertices) / stats.seconds},
-               {"non_finite_samples", stats.nonFiniteSamples}};
+               {"non_finite_samples", stats.nonFiniteSamples},
+               {"negative_samples", stats.negativeSamples},
+               {"dropped_samples", stats.droppedSamples()}};
+      droppedSamples += stats.droppedSamples();
+      droppedMessages += droppedSampleMessage(material.label, stats);
       if (preset == ScenePreset::MaterialSphere) {
         const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
         run["sphere"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Sphere));
@@ -445,6 +537,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
     }
   }
 
+  std::cerr << droppedMessages;
+
   // ---- Write.
   if (gallery) {
     std::vector<ContactSheetEntry> entries;
@@ -452,14 +546,14 @@ int runRenderCommand(const RenderCommandOptions& options) {
     ContactSheetLayout layout;
     layout.columns = options.columns;
     const Image sheet = composeContactSheet(entries, layout);
-    writeBoth(paths, {{"", {"R", "G", "B"}, &sheet}}, sheet, options.exposure);
+    writeBoth(outputs, paths, {{"", {"R", "G", "B"}, &sheet}}, sheet, options.exposure);
   } else {
     const RenderResult& result = results.front();
     std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, &result.color}};
     if (settings.albedoLayer) layers.push_back({"albedo", {"R", "G", "B"}, &result.albedo});
     if (settings.normalLayer) layers.push_back({"normal", {"X", "Y", "Z"}, &result.normal});
     if (settings.varianceLayer) layers.push_back({"variance", {"R", "G", "B"}, &result.variance});
-    writeBoth(paths, layers, result.color, options.exposure);
+    writeBoth(outputs, paths, layers, result.color, options.exposure);
   }
 
   if (options.json) {
@@ -482,26 +576,34 @@ int runRenderCommand(const RenderCommandOptions& options) {
                       {"filter", options.filter},
                       {"exr", paths.exr.string()},
                       {"png", paths.png.string()},
-                      {"renders", runs}}
-                     .dump(2)
+                      {"renders", runs},
+                      {"dropped_samples", droppedSamples},
+                      {"passed", droppedSamples == 0}}
+                     .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
-    return static_cast<int>(ExitCode::Success);
+    return droppedSampleStatus(droppedSamples);
   }
   for (const json& run : runs) {
     std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height
               << ", " << options.spp << (integrator == IntegratorKind::Sppm ? " iterations, " : " spp, ")
               << options.integrator << ", " << run["seconds"].get<double>() << " s, "
               << run["vertices_per_second"].get<double>() / 1e6 << " M path vertices/s";
-    if (run.contains("sphere"))
-      std::cout << ", sphere mean " << run["sphere"]["mean"].get<double>() << ", background mean "
-                << run["background"]["mean"].get<double>();
-    if (run["non_finite_samples"].get<uint64_t>() > 0)
-      std::cout << ", WARNING: " << run["non_finite_samples"].get<uint64_t>()
-                << " non-finite samples dropped";
+    for (const char* region : {"sphere", "background"}) {
+      if (!run.contains(region)) continue;
+      if (run[region]["n"].get<size_t>() == 0)
+        std::cout << ", " << region << " mean undefined at " << resolution->width << "x" << resolution->height
+                  << " (" << EmptyRegionNote << ")";
+      else
+        std::cout << ", " << region << " mean " << run[region]["mean"].get<double>();
+    }
+    if (const uint64_t dropped = run["dropped_samples"].get<uint64_t>(); dropped > 0)
+      std::cout << ", FAILED: " << dropped << " samples dropped ("
+                << run["non_finite_samples"].get<uint64_t>() << " not finite, "
+                << run["negative_samples"].get<uint64_t>() << " negative)";
     std::cout << "\n";
   }
   std::cout << "wrote " << paths.exr.string() << " and " << paths.png.string() << "\n";
-  return static_cast<int>(ExitCode::Success);
+  return droppedSampleStatus(droppedSamples);
 }
 
 }  // namespace scatterlab

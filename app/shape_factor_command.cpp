@@ -8,8 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/json_output.h"
 #include "app/option_values.h"
 #include "app/progress.h"
+#include "app/walk_estimate.h"
 #include "fitting/burley_shape_fit.h"
 #include "materials/core/rng.h"
 #include "validation/half_space_reference.h"
@@ -121,23 +123,37 @@ CLI::App* addShapeFactorCommand(CLI::App& app, ShapeFactorCommandOptions& option
 int runShapeFactorCommand(const ShapeFactorCommandOptions& options) {
   if (options.albedos.empty())
     throw InputError("--albedos: no albedo given; allowed: a list of values in (0, 1)");
-  std::vector<fitting::BurleyShapeFit> fits;
-  ProgressLine progress;
+  std::vector<HalfSpaceWalkSettings> walks;
   for (size_t i = 0; i < options.albedos.size(); ++i) {
+    walks.push_back(fitting::burleyShapeWalkSettings(options.albedos[i], options.paths,
+                                                     deriveSeed(options.seed, i), options.annulusWidth));
+    walks.back().threads = options.threads;
+  }
+  announceWork(estimateWalks("shape-factor: " + std::to_string(walks.size()) + " walks of " +
+                                 std::to_string(options.paths) + " paths",
+                             walks));
+  std::vector<fitting::BurleyShapeFit> fits;
+  uint64_t nonFinite = 0;  // walk paths that stopped being finite (half_space_walk.h)
+  ProgressLine progress;
+  for (size_t i = 0; i < walks.size(); ++i) {
     const double albedo = options.albedos[i];
-    HalfSpaceWalkSettings settings = fitting::burleyShapeWalkSettings(
-        albedo, options.paths, deriveSeed(options.seed, i), options.annulusWidth);
-    settings.threads = options.threads;
     const HalfSpaceWalkResult walk =
-        simulateHalfSpace(settings, progress.walkCallback("walk at A " + std::to_string(albedo)));
+        simulateHalfSpace(walks[i], progress.walkCallback("walk at A " + std::to_string(albedo)));
+    nonFinite += walk.nonFinite;
     fits.push_back(fitting::fitBurleyShapeFactor(walk, albedo));
   }
   progress.clear();
-  if (options.json)
-    std::cout << tableJson(options, fits).dump(2) << "\n";
-  else
+  if (options.json) {
+    json table = tableJson(options, fits);
+    table["non_finite_paths"] = nonFinite;
+    std::cout << jsonText(table) << "\n";
+  } else {
     printTable(options, fits);
-  return static_cast<int>(ExitCode::Success);
+  }
+  if (nonFinite == 0) return static_cast<int>(ExitCode::Success);
+  std::cerr << "shape-factor: " << nonFinite
+            << " walk paths stopped being finite; they are left out of every tally\n";
+  return static_cast<int>(ExitCode::CheckFailed);
 }
 
 }  // namespace scatterlab

@@ -14,11 +14,16 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/json_output.h"
 #include "app/measured_bundle.h"
 #include "app/option_values.h"
+#include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
+#include "app/staged_outputs.h"
 #include "app/table_cache.h"
 #include "materials/core/atomic_file.h"
+#include "materials/core/quoted.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/ngan_fits.h"
 #include "materials/registry/material_file.h"
@@ -30,8 +35,6 @@ namespace {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 // The models whose sum is tabulated, and how --json describes them.
 struct GroundTruth {
@@ -46,12 +49,25 @@ struct GroundTruth {
   }
 };
 
-GroundTruth fromMaterialArgument(const std::string& argument) {
+// A table holds f at directions spread over the hemisphere: delta lobes (a mirror, smooth
+// glass) put nothing there, and transmission is not tabulated.
+bool reflectsIntoTable(const BsdfModel& model) {
+  return hasAny(model.flags(), LobeFlags::Reflection) &&
+         hasAny(model.flags(), LobeFlags::Diffuse | LobeFlags::Glossy);
+}
+
+GroundTruth fromMaterialArgument(const std::string& argument, std::vector<InputPath>& inputs) {
   const json material = loadMaterialArgument(argument);
+  addMaterialInputs(inputs, argument, material);
   try {
-    GroundTruth truth{isInlineMaterial(argument) ? material.dump() : argument, json::object(), {}};
+    GroundTruth truth{isInlineMaterial(argument) ? jsonText(material, -1) : argument, json::object(), {}};
     const json completed = completeMaterial(material);
     truth.models.push_back(makeBsdf(material));
+    if (!reflectsIntoTable(*truth.models.back()))
+      throw MaterialError("material key \"type\": " + inQuotes(completed.value("type", std::string())) +
+                          " has no diffuse or glossy reflection (" + toString(truth.models.back()->flags()) +
+                          "), so its table would hold nothing; allowed: a material that reflects over the "
+                          "hemisphere");
     truth.description = {{"material", completed}};
     return truth;
   } catch (const MaterialError& error) {
@@ -106,15 +122,17 @@ json perturbationJson(const MeasurementPerturbation& p) {
           {"missing_above_deg", p.missingAboveDeg ? json(*p.missingAboveDeg) : json()}};
 }
 
-// Synthesises, writes atomically, and returns what --json reports.
+// Synthesises, writes `written` (atomically; the output's temporary when it is staged), and
+// returns what --json reports about `out`.
 json synthesizeAndWrite(const GroundTruth& truth, const MeasurementPerturbation& perturbation,
-                        const fs::path& out, int threads, ProgressLine& progress, const std::string& step) {
+                        const fs::path& out, const fs::path& written, int threads, ProgressLine& progress,
+                        const std::string& step) {
   const MeasurementSynthesizer synthesizer(truth.components(), perturbation);
   const auto start = std::chrono::steady_clock::now();
   const MerlTable table = synthesizeTable(synthesizer, threads, progress.callback(step + " " + truth.label));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   try {
-    writeMerl(out, table);
+    writeMerl(written, table);
   } catch (const MerlError& error) {
     throw InputError(std::string("--out: ") + error.what());
   }
@@ -175,7 +193,7 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
     } else {
       const GroundTruth truth = fromFit(parsePublishedFitLine(material.fitLine), BundleFitFile);
       const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(bundle.size()) + "]";
-      entry = synthesizeAndWrite(truth, perturbation, file, options.threads, progress, step);
+      entry = synthesizeAndWrite(truth, perturbation, file, file, options.threads, progress, step);
       entry["cached"] = false;
       cache.record(material.name, material.category, source);
     }
@@ -189,7 +207,7 @@ int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation&
     std::cout << json{{"bundle", directory.string()},
                       {"manifest", cache.manifestPath().string()},
                       {"written", written}}
-                     .dump(2)
+                     .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
   else
     std::cout << "bundle: " << directory.string() << " (" << bundle.size() << " materials, manifest "
@@ -275,6 +293,7 @@ CLI::App* addSynthCommand(CLI::App& app, SynthCommandOptions& options) {
       ->capture_default_str();
   command->add_flag("--force", options.force, "With --bundle: regenerate files already in the cache");
   command->add_flag("--json", options.json, "Print what was written as JSON");
+  addPluginOption(*command);
   return command;
 }
 
@@ -294,16 +313,22 @@ int runSynthCommand(const SynthCommandOptions& options) {
     if (!options.out.empty()) throw InputError("--out: not used with --bundle (the bundle names its files)");
     return runBundle(options, perturbation);
   }
-  checkOutputFile("--out", options.out, "gold.binary");
-  const GroundTruth truth = options.fitFile.empty() ? fromMaterialArgument(options.material)
+  std::vector<InputPath> inputs;
+  if (!options.fitFile.empty()) inputs.push_back({"published-fits file (--fit)", options.fitFile});
+  const GroundTruth truth = options.fitFile.empty() ? fromMaterialArgument(options.material, inputs)
                                                     : fromFitFile(options.fitFile, options.fitName);
+  StagedOutputs outputs(inputs);
+  outputs.addFile("--out", options.out, "gold.binary");
+  outputs.prepare();
   json entry;
   {
     ProgressLine progress;
-    entry = synthesizeAndWrite(truth, perturbation, options.out, options.threads, progress, "synth");
+    entry = synthesizeAndWrite(truth, perturbation, options.out, outputs.staged(options.out), options.threads,
+                               progress, "synth");
   }
+  outputs.commit();
   if (options.json)
-    std::cout << json{{"written", json::array({entry})}}.dump(2) << "\n";
+    std::cout << jsonText(json{{"written", json::array({entry})}}) << "\n";
   else
     printWritten(entry, truth.label);
   return static_cast<int>(ExitCode::Success);

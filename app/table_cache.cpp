@@ -1,8 +1,8 @@
 #include "app/table_cache.h"
 
-#include <fstream>
-
 #include "materials/core/atomic_file.h"
+#include "materials/core/bounded_file.h"
+#include "materials/core/json_text.h"
 #include "materials/measured/merl_format.h"
 
 namespace scatterlab {
@@ -15,9 +15,15 @@ namespace fs = std::filesystem;
 constexpr const char* ManifestName = "bundle.json";
 constexpr int ManifestFormat = 1;
 
+// A missing, unreadable, oversized or malformed manifest is an empty cache (its tables are
+// made again), never an error.
 json readManifest(const fs::path& path) {
-  std::ifstream in(path);
-  json manifest = in ? json::parse(in, nullptr, /*allow_exceptions=*/false) : json();
+  json manifest;
+  try {
+    manifest = parseJsonText(readFileBounded(path, MaxJsonFileBytes, "table manifest"), path.string());
+  } catch (const std::exception&) {
+    manifest = json();
+  }
   if (!manifest.is_object() || manifest.value("format", 0) != ManifestFormat) manifest = json::object();
   manifest["format"] = ManifestFormat;
   if (!manifest.contains("materials") || !manifest["materials"].is_object())

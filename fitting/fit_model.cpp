@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 
 #include "materials/bsdf/metals.h"
+#include "materials/core/json_text.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/spec_validation.h"
 
@@ -128,10 +133,54 @@ const std::vector<LobeInfo>& lobeInfos() {
   return infos;
 }
 
+FitKernelVariant pluginKernel(const json& completed) {
+  ValidatedMaterial validated = validateMaterial(completed);
+  return PluginModelKernel(*validated.model, std::move(validated.parameters));
+}
+
+// A plugin's model as the fitter sees it (plugin_model_kernel.h): every numeric parameter a
+// shape, spaced in the log for its lobe width (an exponent or roughness spans decades), no
+// linear terms. Made once per type; the registry's entries (and their names) never move.
+const LobeInfo& pluginLobeInfo(const MaterialModel& model) {
+  static std::mutex mutex;
+  static std::deque<LobeInfo> infos;
+  const std::lock_guard lock(mutex);
+  for (const LobeInfo& info : infos)
+    if (model.type == info.type) return info;
+  LobeInfo info{model.type.c_str(), {}, {}, pluginKernel, true};
+  for (const ParameterSpec& spec : model.parameters) {
+    const int slots = spec.kind == ParameterKind::Number ? 1
+                      : spec.kind == ParameterKind::Rgb  ? 3
+                      : spec.kind == ParameterKind::Pair ? 2
+                                                         : 0;
+    if (slots == 0) continue;
+    const bool logarithmic = spec.name == model.lobeWidthParameter && spec.range.max > 1;
+    info.shapes.push_back({spec.name.c_str(), slots, logarithmic ? GridSpacing::Log : GridSpacing::Linear});
+  }
+  return infos.emplace_back(std::move(info));
+}
+
 const LobeInfo* findLobeInfo(const std::string& type) {
   for (const LobeInfo& info : lobeInfos())
     if (type == info.type) return &info;
+  const MaterialModel* model = findMaterialModel(type);
+  if (model && !model->plugin.empty() && model->kind == MaterialKind::Bsdf) return &pluginLobeInfo(*model);
   return nullptr;
+}
+
+// Why a plugin's model (that findLobeInfo accepts) cannot be fitted, or nothing.
+std::optional<std::string> pluginRefusal(const MaterialModel& model, const json& completed) {
+  const int slots = pluginModelSlots(model);
+  if (slots == 0) return "it has no number, rgb or pair parameter to fit";
+  if (slots > MaxSlots)
+    return "its parameters take " + std::to_string(slots) + " numbers, the fitter at most " +
+           std::to_string(MaxSlots);
+  const LobeFlags flags = makeBsdf(completed)->flags();
+  if (hasAny(flags, LobeFlags::Specular))
+    return "it has delta (mirror) lobes, which have no BRDF values to compare with a table";
+  if (hasAny(flags, LobeFlags::Transmission))
+    return "it transmits light, which a reflection table does not constrain";
+  return std::nullopt;
 }
 
 // Why a registry model cannot be fitted.
@@ -146,12 +195,10 @@ std::string refusal(const std::string& type) {
   return "it is not a model of the registry";
 }
 
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
-
 std::string allowedModels() {
   std::string out = "one of ";
   const auto names = fittableModels();
-  for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + quoted(names[i]);
+  for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + inQuotes(names[i]);
   return out + ", joined by '+'";
 }
 
@@ -192,12 +239,12 @@ std::string trimmed(const std::string& text) {
 
 json parseComponentText(const std::string& text, const std::string& spec) {
   if (text.empty())
-    throw MaterialError("model " + quoted(spec) + ": an empty component; allowed: " + allowedModels());
+    throw MaterialError("model " + inQuotes(spec) + ": an empty component; allowed: " + allowedModels());
   if (text.front() != '{') return json{{"type", text}};
   try {
-    return json::parse(text);
-  } catch (const json::parse_error& error) {
-    throw MaterialError("model component " + quoted(text) + ": not valid JSON (" + error.what() +
+    return parseJsonText(text, "model component");
+  } catch (const JsonTextError& error) {
+    throw MaterialError("model component " + inQuotes(text) + ": not valid JSON (" + error.what() +
                         "); allowed: a registry type or a JSON object such as {\"type\": \"conductor\"}");
   }
 }
@@ -226,7 +273,20 @@ std::vector<double> slotValues(const json& value, int slots) {
 std::vector<std::string> fittableModels() {
   std::vector<std::string> names;
   for (const LobeInfo& info : lobeInfos()) names.emplace_back(info.type);
+  for (const MaterialModel& model : materialModels())
+    if (!model.plugin.empty() && model.kind == MaterialKind::Bsdf) names.push_back(model.type);
   return names;
+}
+
+std::vector<std::string> FitModel::derivativeNotes() const {
+  std::vector<std::string> notes;
+  for (const FitComponent& comp : components_)
+    if (const auto* plugin = std::get_if<PluginModelKernel>(&comp.kernel);
+        plugin && plugin->numericDerivatives())
+      notes.push_back("model component \"" + comp.label + "\": numeric derivatives (central differences of " +
+                      "the model's eval): its plugin (" + plugin->model().plugin +
+                      ") registers no fit kernel (fitting/plugin_fit_kernel.h gives exact ones)");
+  return notes;
 }
 
 std::vector<json> parseModelSpec(const std::string& spec, int lobes) {
@@ -236,13 +296,13 @@ std::vector<json> parseModelSpec(const std::string& spec, int lobes) {
   if (!text.empty() && text.front() == '[') {
     json array;
     try {
-      array = json::parse(text);
-    } catch (const json::parse_error& error) {
-      throw MaterialError("model " + quoted(text) + ": not valid JSON (" + error.what() +
+      array = parseJsonText(text, "model");
+    } catch (const JsonTextError& error) {
+      throw MaterialError("model " + inQuotes(text) + ": not valid JSON (" + error.what() +
                           "); allowed: an array of material objects, or types joined by '+'");
     }
     if (array.empty())
-      throw MaterialError("model " + quoted(text) + ": no components; allowed: " + allowedModels());
+      throw MaterialError("model " + inQuotes(text) + ": no components; allowed: " + allowedModels());
     for (const json& part : array) components.push_back(part);
   } else {
     for (const std::string& part : splitTopLevel(text))
@@ -274,7 +334,7 @@ FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape)
     const LobeInfo& info = *findLobeInfo(comp.type);
     if (info.hasRest && components_.size() > 1)
       throw MaterialError(
-          "model component " + quoted(comp.label) +
+          "model component " + inQuotes(comp.label) +
           ": a model with no linear scale of its whole value (eon, disney, ashikhmin-shirley) can "
           "only be fitted alone; allowed: that model by itself, or models with an albedo joined by '+'");
   }
@@ -288,9 +348,9 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   const LobeInfo* info = findLobeInfo(type);
   if (!info) {
     if (!findMaterialModel(type))
-      throw MaterialError("model component " + quoted(type) +
+      throw MaterialError("model component " + inQuotes(type) +
                           " is not a known model; allowed: " + allowedModels());
-    throw MaterialError("model component " + quoted(type) + " cannot be fitted: " + refusal(type) +
+    throw MaterialError("model component " + inQuotes(type) + " cannot be fitted: " + refusal(type) +
                         "; allowed: " + allowedModels());
   }
   json given = description;
@@ -305,10 +365,10 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   try {
     completed = completeMaterial(given);
   } catch (const MaterialError& error) {
-    throw MaterialError("model component " + quoted(label) + ": " + error.what());
+    throw MaterialError("model component " + inQuotes(label) + ": " + error.what());
   }
   if (type == "conductor" && completed.value("multiscatter", "none") != "none")
-    throw MaterialError("model component " + quoted(label) + ": \"multiscatter\": \"" +
+    throw MaterialError("model component " + inQuotes(label) + ": \"multiscatter\": \"" +
                         completed["multiscatter"].get<std::string>() +
                         "\" cannot be fitted (its compensation reads albedo tables); allowed: \"none\"");
   if (type == "conductor" && completed.contains("metal")) {
@@ -318,6 +378,11 @@ void FitModel::addComponent(const json& description, const std::string& label, b
     completed.erase("metal");
   }
   const MaterialModel& registry = *findMaterialModel(type);
+  if (!registry.plugin.empty())
+    if (const auto why = pluginRefusal(registry, completed))
+      throw MaterialError("model component " + quoted(type) + " cannot be fitted: " + *why +
+                          "; allowed: a plugin model with 1 to " + std::to_string(MaxSlots) +
+                          " numeric values that only reflects");
 
   FitComponent comp;
   comp.label = label;
@@ -387,6 +452,10 @@ void FitModel::addComponent(const json& description, const std::string& label, b
       continue;
     }
     const ValueRange range = registry.findParameter(shape.key)->range;
+    if (!registry.plugin.empty() && !(std::isfinite(range.min) && std::isfinite(range.max)))
+      throw MaterialError("model component " + quoted(label) + ": parameter " + quoted(shape.key) +
+                          " has an unbounded range (" + range.describe() +
+                          "), which the fitter's grid cannot cover; allowed: give it a value to hold it");
     std::array<int, 3> perEvaluation{};
     if (shape.slots == 3) {
       // An RGB shape: one parameter per channel, read by every evaluation.
@@ -483,19 +552,34 @@ void FitModel::evaluateTerms(const double* x, const Vec3d& wi, const Vec3d& wo,
         [&](const auto& kernel) {
           using Kernel = std::decay_t<decltype(kernel)>;
           const int evaluations = comp.perChannel ? 3 : 1;
-          for (int e = 0; e < evaluations; ++e) {
-            std::array<double, MaxSlots> slots{};
-            for (int i = 0; i < Kernel::Slots; ++i) {
-              const int index = comp.slotParameter[size_t(e)][size_t(i)];
-              slots[size_t(i)] = index >= 0 ? x[index] : comp.heldSlot[size_t(i)];
+          if constexpr (std::is_same_v<Kernel, PluginModelKernel>) {
+            // No linear terms: the whole value is the rest.
+            for (int e = 0; e < evaluations; ++e) {
+              std::array<double, MaxSlots> slots{};
+              for (int i = 0; i < kernel.slots(); ++i) {
+                const int index = comp.slotParameter[size_t(e)][size_t(i)];
+                slots[size_t(i)] = index >= 0 ? x[index] : comp.heldSlot[size_t(i)];
+              }
+              double value[3];
+              kernel.eval(slots.data(), wi, wo, value, nullptr);
+              const int cBegin = comp.perChannel ? e : 0, cEnd = comp.perChannel ? e + 1 : 3;
+              for (int c = cBegin; c < cEnd; ++c) rests[k][c] = value[c];
             }
-            std::array<Rgb, MaxTerms> t{};
-            Rgb rest;
-            kernel.eval(slots.data(), wi, wo, t.data(), rest);
-            const int cBegin = comp.perChannel ? e : 0, cEnd = comp.perChannel ? e + 1 : 3;
-            for (int c = cBegin; c < cEnd; ++c) {
-              for (int j = 0; j < Kernel::Terms; ++j) terms[k][size_t(j)][c] = t[size_t(j)][c];
-              rests[k][c] = rest[c];
+          } else {
+            for (int e = 0; e < evaluations; ++e) {
+              std::array<double, MaxSlots> slots{};
+              for (int i = 0; i < Kernel::Slots; ++i) {
+                const int index = comp.slotParameter[size_t(e)][size_t(i)];
+                slots[size_t(i)] = index >= 0 ? x[index] : comp.heldSlot[size_t(i)];
+              }
+              std::array<Rgb, MaxTerms> t{};
+              Rgb rest;
+              kernel.eval(slots.data(), wi, wo, t.data(), rest);
+              const int cBegin = comp.perChannel ? e : 0, cEnd = comp.perChannel ? e + 1 : 3;
+              for (int c = cBegin; c < cEnd; ++c) {
+                for (int j = 0; j < Kernel::Terms; ++j) terms[k][size_t(j)][c] = t[size_t(j)][c];
+                rests[k][c] = rest[c];
+              }
             }
           }
         },

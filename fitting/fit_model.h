@@ -31,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fitting/lobe_kernels.h"
+#include "fitting/plugin_model_kernel.h"
 #include "materials/registry/parameter_spec.h"
 
 namespace scatterlab::fitting {
@@ -56,7 +57,8 @@ using FitKernelVariant =
     std::variant<LambertianKernel, OrenNayarKernel, EonKernel, NormalizedPhongKernel<PhongLobe>,
                  NormalizedPhongKernel<BlinnPhongLobe>, LafortuneKernel, WardKernel, NganWardKernel,
                  AshikhminShirleyKernel, NganAshikhminShirleyKernel, NganCookTorranceKernel,
-                 ConductorKernel<GgxDistribution>, ConductorKernel<BeckmannDistribution>, DisneyKernel>;
+                 ConductorKernel<GgxDistribution>, ConductorKernel<BeckmannDistribution>, DisneyKernel,
+                 PluginModelKernel>;
 
 inline constexpr int MaxSlots = 13;
 inline constexpr int MaxTerms = 2;
@@ -126,6 +128,10 @@ class FitModel {
   // k's term j, per channel.
   void evaluateTerms(const double* x, const Vec3d& wi, const Vec3d& wo,
                      std::vector<std::array<Rgb, MaxTerms>>& terms, std::vector<Rgb>& rests) const;
+
+  // How the derivatives are computed where it is not the usual automatic differentiation:
+  // one line per plugin component without a fit kernel (plugin_model_kernel.h).
+  std::vector<std::string> derivativeNotes() const;
 
  private:
   void addComponent(const nlohmann::json& description, const std::string& label, bool repeated);
@@ -205,6 +211,32 @@ void evaluateComponent(const Kernel& kernel, const FitComponent& comp, const dou
         value[c] += rest[c].a;
         addSlots(rest[c], 1.0);
       }
+    }
+  }
+}
+
+// A plugin's model (plugin_model_kernel.h): the same accumulation over the slots as above, its
+// values and derivatives from the kernel.
+template <bool Derivatives> void evaluateComponent(const PluginModelKernel& kernel, const FitComponent& comp,
+                                                   const double* x, size_t p, const Vec3d& wi,
+                                                   const Vec3d& wo, double value[3], double* rows) {
+  const int slots = kernel.slots();
+  const int evaluations = comp.perChannel ? 3 : 1;
+  std::array<double, MaxSlots> s{};
+  std::array<double, 3 * MaxSlots> gradient{};
+  for (int e = 0; e < evaluations; ++e) {
+    const auto& slotIndex = comp.slotParameter[size_t(e)];
+    for (int i = 0; i < slots; ++i)
+      s[size_t(i)] = slotIndex[size_t(i)] >= 0 ? x[slotIndex[size_t(i)]] : comp.heldSlot[size_t(i)];
+    double f[3];
+    kernel.eval(s.data(), wi, wo, f, Derivatives ? gradient.data() : nullptr);
+    const int cBegin = comp.perChannel ? e : 0, cEnd = comp.perChannel ? e + 1 : 3;
+    for (int c = cBegin; c < cEnd; ++c) {
+      value[c] += f[c];
+      if constexpr (Derivatives)
+        for (int i = 0; i < slots; ++i)
+          if (slotIndex[size_t(i)] >= 0)
+            rows[size_t(c) * p + size_t(slotIndex[size_t(i)])] += gradient[size_t(c * slots + i)];
     }
   }
 }

@@ -1,5 +1,8 @@
 #include "integrator/exr_io.h"
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <system_error>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -7,15 +10,15 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 
 #include "integrator/render_error.h"
 #include "materials/core/atomic_file.h"
+#include "materials/core/quoted.h"
 
 namespace scatterlab {
 
 namespace {
-
-std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 std::string channelName(const ExrLayer& layer, int c) {
   return layer.prefix.empty() ? layer.channelNames[c] : layer.prefix + "." + layer.channelNames[c];
@@ -44,9 +47,20 @@ void writeExr(const std::filesystem::path& path, const std::vector<ExrLayer>& la
   }
   try {
     writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
-      Imf::OutputFile file(temporary.c_str(), header);
-      file.setFrameBuffer(frameBuffer);
-      file.writePixels(height);
+      // The stream is ours, so that its close is checked: OpenEXR writes through a buffered
+      // std::ofstream whose last bytes reach the disk in a destructor that cannot report a
+      // full disk or a file-size limit, which would leave a truncated file and no error.
+      std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
+      if (!stream)
+        throw std::runtime_error(std::string("cannot create the file (") + std::strerror(errno) + ")");
+      {
+        Imf::StdOFStream out(stream, temporary.c_str());
+        Imf::OutputFile file(out, header);
+        file.setFrameBuffer(frameBuffer);
+        file.writePixels(height);
+      }
+      stream.close();
+      if (!stream) throw std::runtime_error(std::string("write failed (") + std::strerror(errno) + ")");
     });
   } catch (const std::exception& error) {
     throw RenderInputError("cannot write " + inQuotes(path.string()) + ": " + error.what() +
@@ -90,10 +104,11 @@ Image readExrRgb(const std::filesystem::path& path, const std::string& what) {
     const Imath::Box2i window = file.header().dataWindow();
     const long width = long(window.max.x) - window.min.x + 1, height = long(window.max.y) - window.min.y + 1;
     constexpr long MaxSide = 1 << 16;
-    if (width < 1 || height < 1 || width > MaxSide || height > MaxSide)
+    if (width < 1 || height < 1 || width > MaxSide || height > MaxSide || width * height > MaxExrPixels)
       throw RenderInputError(name + ": data window of " + std::to_string(width) + " x " +
                              std::to_string(height) + " pixels; allowed: 1 to " + std::to_string(MaxSide) +
-                             " pixels per side");
+                             " pixels per side and at most " + std::to_string(MaxExrPixels) +
+                             " pixels (8192 x 4096), checked before the pixels are read");
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
     const bool grey = !rgb && channels.findChannel("Y");

@@ -23,11 +23,15 @@ struct ExrLayer {
 // naming the file when it cannot be written.
 void writeExr(const std::filesystem::path& path, const std::vector<ExrLayer>& layers);
 
+// The most pixels readExrRgb reads: 8192 x 4096, 0.4 GB as float RGB (an environment map
+// then needs about as much again for its sampling tables).
+inline constexpr long MaxExrPixels = 1L << 25;
+
 // Reads the R, G and B channels (or Y, as grey, when the file has no colour) of an EXR file's
 // data window into a 3-channel float image, any stored pixel type converted to float. Throws
 // RenderInputError naming the file and the problem: not found, a directory, not an EXR file,
-// truncated or otherwise unreadable, no R, G, B or Y channels. `what` begins the message
-// ("environment map").
+// truncated or otherwise unreadable, too many pixels, no R, G, B or Y channels. `what` begins
+// the message ("environment map").
 Image readExrRgb(const std::filesystem::path& path, const std::string& what = "EXR file");
 
 // The channel names of an EXR file, in the file's (alphabetical) order. Throws

@@ -1,22 +1,16 @@
 #include "integrator/material_scene.h"
 
-#include <stdexcept>
-#include <string>
 #include <utility>
 
+#include "integrator/fault_injection.h"
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
 RenderableMaterial makeRenderableMaterial(const nlohmann::json& material) {
-  if (!isSubsurfaceMaterial(material)) return {makeBsdf(material), std::nullopt};
-  SubsurfaceMaterial subsurface = makeSubsurface(material);
-  try {
-    makeSubsurfaceBoundary(subsurface);  // the renderer's own limits on the boundary
-  } catch (const std::invalid_argument& error) {
-    throw MaterialError(std::string("\"boundary\": ") + error.what());
-  }
-  return {nullptr, std::move(subsurface)};
+  if (!isSubsurfaceMaterial(material)) return {withTestFault(makeBsdf(material)), std::nullopt};
+  // makeSubsurface has checked what the renderer needs of the boundary (a rough boundary's eta).
+  return {nullptr, makeSubsurface(material)};
 }
 
 Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode,

@@ -127,6 +127,13 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
       continueAlong(hit->point, hit->geometry.normal, *sample);
     }
 
+    // A weight that is not finite or negative ends the path, which says so: the film counts it
+    // (render.h) where a silent end would look like absorbed light.
+    if (const SampleValue value = classifyValue(throughput); value != SampleValue::Valid) {
+      out.invalid = value;
+      break;
+    }
+
     // ---- Russian roulette (pbrt-v4 PathIntegrator::Li): survive with probability q = the
     // largest channel of throughput * etaScale, when below 1, and divide by it.
     if (bounce + 1 >= settings.rouletteDepth) {

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "integrator/sample_value.h"
 #include "integrator/sampler.h"
 #include "integrator/scene.h"
 
@@ -47,6 +48,9 @@ struct PathSample {
   Rgb albedo{0.0};        // the first vertex's BSDF sample weight f |cos| / pdf: an unbiased albedo estimate
   Vec3d normal{0.0};      // the first vertex's shading normal; 0 when the camera ray escapes
   uint32_t vertices = 0;  // surface hits along the path (shadow rays not counted)
+  // Not Valid when a weight along the path was not finite or negative (sample_value.h): the
+  // path ended there, and the film drops and counts the sample.
+  SampleValue invalid = SampleValue::Valid;
 };
 
 // Veach's power heuristic for two strategies, the first evaluated (beta = 2), written as

@@ -79,6 +79,13 @@ std::string toString(IntegratorKind kind) {
   return "path";
 }
 
+SampleValue classifySample(const PathSample& path) {
+  if (path.invalid != SampleValue::Valid) return path.invalid;
+  if (const SampleValue radiance = classifyValue(path.radiance); radiance != SampleValue::Valid)
+    return radiance;
+  return classifyValue(path.albedo);
+}
+
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const std::function<void(double)>& progress) {
   const PinholeCamera& camera = scene.camera();
@@ -104,14 +111,17 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
 
   const int tilesX = (width + TileSize - 1) / TileSize, tilesY = (height + TileSize - 1) / TileSize;
   const int tileCount = tilesX * tilesY;
-  std::atomic<uint64_t> vertices{0}, nonFinite{0};
-  std::atomic<int> tilesDone{0};
+  std::atomic<uint64_t> vertices{0}, nonFinite{0}, negative{0};
+  // Progress counts pixels, reported after each row of a tile: with many samples per pixel a
+  // tile takes minutes, and a log should still hear from the run every few seconds.
+  std::atomic<uint64_t> pixelsDone{0};
+  const double pixelCount = double(width) * double(height);
 
   const auto renderTile = [&](int tile) {
     const int x0 = (tile % tilesX) * TileSize, y0 = (tile / tilesX) * TileSize;
     const int x1 = std::min(x0 + TileSize, width), y1 = std::min(y0 + TileSize, height);
-    uint64_t tileVertices = 0, tileNonFinite = 0;
-    for (int y = y0; y < y1; ++y)
+    RenderStatistics tileStatistics;
+    for (int y = y0; y < y1; ++y) {
       for (int x = x0; x < x1; ++x) {
         const uint64_t pixel = uint64_t(y) * uint64_t(width) + uint64_t(x);
         PixelAccumulator acc;
@@ -119,13 +129,14 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
           SampleStream random(settings.seed, pixel, uint64_t(s));
           const Vec2d film = Vec2d(x + 0.5, y + 0.5) + settings.filter.sampleOffset(random);
           const PathSample path = tracePath(scene, camera.generateRay(film), random, settings.integrator);
-          tileVertices += path.vertices;
-          if (isFinite(path.radiance) && isFinite(path.albedo)) {
+          tileStatistics.vertices += path.vertices;
+          const SampleValue value = classifySample(path);
+          if (value == SampleValue::Valid) {
             acc.add(path.radiance);
             acc.albedo += path.albedo;
             acc.normal += path.normal;
           } else {
-            ++tileNonFinite;
+            tileStatistics.count(value);
             acc.add(Rgb(0.0));
           }
         }
@@ -134,10 +145,11 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
         if (settings.normalLayer) result.normal.setRgb(x, y, acc.normal / double(spp));
         if (settings.varianceLayer) result.variance.setRgb(x, y, acc.varianceOfMean());
       }
-    vertices += tileVertices;
-    nonFinite += tileNonFinite;
-    const int done = ++tilesDone;
-    if (progress) progress(double(done) / tileCount);
+      if (progress) progress(double(pixelsDone += uint64_t(x1 - x0)) / pixelCount);
+    }
+    vertices += tileStatistics.vertices;
+    nonFinite += tileStatistics.nonFiniteSamples;
+    negative += tileStatistics.negativeSamples;
   };
 
   const auto start = std::chrono::steady_clock::now();
@@ -151,6 +163,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings,
   result.statistics.samples = uint64_t(width) * uint64_t(height) * uint64_t(spp);
   result.statistics.vertices = vertices;
   result.statistics.nonFiniteSamples = nonFinite;
+  result.statistics.negativeSamples = negative;
   return result;
 }
 

@@ -6,9 +6,11 @@
 // Layers: colour (radiance), and on request the first vertex's albedo estimate and shading
 // normal (means over the pixel's samples, 0 where the camera ray escapes: inputs for a
 // denoiser) and the variance of the colour's pixel mean, s^2 / n with s^2 the unbiased sample
-// variance per channel (0 when spp = 1, where it cannot be estimated). A sample with a
-// non-finite value (never expected: the tests check every catalog material) contributes 0 and
-// is counted, so no NaN or infinity ever reaches the film.
+// variance per channel (0 when spp = 1, where it cannot be estimated). A sample whose value is
+// not finite or has a negative channel (never expected: the tests check every catalog
+// material) is dropped: it contributes 0 and is counted (RenderStatistics), so no NaN or
+// infinity ever reaches the film and nothing is lost silently. Callers report the counts and
+// fail when they are not 0.
 #pragma once
 
 #include <cstdint>
@@ -62,11 +64,22 @@ inline constexpr int64_t MaxImagePixels = int64_t(1)
 inline constexpr int MaxSamplesPerPixel = 1 << 20;
 inline constexpr int MaxPathDepth = 1024;
 
+// The film's rule for one path (sample_value.h): dropped when the path ended on an invalid
+// weight, or when its radiance or albedo estimate is not finite or negative.
+SampleValue classifySample(const PathSample& path);
+
 struct RenderStatistics {
   uint64_t samples = 0;
   uint64_t vertices = 0;          // surface hits of every path
   uint64_t nonFiniteSamples = 0;  // samples dropped as non-finite (expected 0)
+  uint64_t negativeSamples = 0;   // samples dropped for a negative channel (expected 0)
   double seconds = 0.0;           // wall time of the path tracing
+
+  uint64_t droppedSamples() const { return nonFiniteSamples + negativeSamples; }
+  void count(SampleValue value) {
+    nonFiniteSamples += value == SampleValue::NonFinite;
+    negativeSamples += value == SampleValue::Negative;
+  }
 };
 
 struct RenderResult {

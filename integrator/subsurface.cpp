@@ -5,7 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "integrator/sample_value.h"
 #include "integrator/scene.h"
+#include "materials/bsdf/dielectric_index_spec.h"
 #include "materials/bsdf/rough_dielectric.h"
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/bssrdf/henyey_greenstein.h"
@@ -36,9 +38,12 @@ std::string toString(SubsurfaceMode mode) { return mode == SubsurfaceMode::Diffu
 std::unique_ptr<BsdfModel> makeSubsurfaceBoundary(const SubsurfaceMaterial& material) {
   const double eta = material.medium.eta;
   if (material.boundary == SubsurfaceBoundary::Smooth) return std::make_unique<SmoothDielectricBsdf>(eta);
-  if (!(eta >= 1.02 && eta <= 4.0))
-    throw std::invalid_argument("subsurface material: a rough boundary needs eta in [1.02, 4], not " +
-                                std::to_string(eta) + " (use \"boundary\": \"smooth\")");
+  // The registry refuses such a material when it is read (subsurface_registry.cpp); a
+  // SubsurfaceMaterial built in code reaches here unchecked.
+  if (!RoughDielectricIndexRange.contains(eta))
+    throw std::invalid_argument("subsurface material: a rough boundary needs eta " +
+                                RoughDielectricIndexRange.describe() + ", not " + std::to_string(eta) +
+                                " (use \"boundary\": \"smooth\")");
   return makeRoughDielectric(MicrofacetType::Ggx, material.roughness, material.roughness, eta,
                              MultipleScattering::KullaConty);
 }
@@ -81,8 +86,9 @@ std::optional<DiffusionExit> sampleDiffusionExit(const Scene& scene, int shape,
   const SurfaceGeometry geometry = scene.shapeGeometry(shape, xo);
   const double pdf = subsurface.probe.pdf(frame, point, xo, geometry.normal) / count;
   if (!(pdf > 0)) return std::nullopt;
+  // A weight that is not finite or negative is returned as it is: the path tracer ends the path
+  // on it and the film counts the sample (sample_value.h), where dropping it here would hide it.
   const Rgb weight = subsurface.material.profile->eval(glm::length(xo - point)) / pdf;
-  if (!isFinite(weight)) return std::nullopt;
   return DiffusionExit{xo, geometry, weight};
 }
 
@@ -126,7 +132,10 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
       d = sample->wo;
       p = offsetRayOrigin(hit, geometry.normal, d);
     }
-    if (!isFinite(weight)) return std::nullopt;
+    // A weight that is not finite or negative leaves the walk as it is, where it arose (before
+    // the roulette could end the walk on it): the path tracer ends the path on it and the film
+    // counts the sample (sample_value.h).
+    if (classifyValue(weight) != SampleValue::Valid) return WalkExit{p, -d, d, weight};
     // Russian roulette on the walk's own weight (path_tracer.cpp does the same for the path).
     if (event >= WalkRouletteEvents) {
       const double q = std::max({weight.x, weight.y, weight.z});

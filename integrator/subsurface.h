@@ -53,7 +53,8 @@ inline constexpr int MaxWalkEvents = 10'000'000;
 
 // The boundary model of a subsurface material: SmoothDielectricBsdf(eta), or for a rough
 // boundary GGX with alpha = roughness and Kulla-Conty compensation (lossless); a rough boundary
-// needs eta in [1.02, 4] (std::invalid_argument otherwise).
+// needs eta in RoughDielectricIndexRange (materials/bsdf/dielectric_index_spec.h;
+// std::invalid_argument otherwise, which the registry already refuses when it reads the material).
 std::unique_ptr<BsdfModel> makeSubsurfaceBoundary(const SubsurfaceMaterial& material);
 
 // What the scene keeps of a subsurface material (the boundary model is the scene's material).

@@ -1,6 +1,7 @@
 #include "validation/bsdf_check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -48,13 +49,25 @@ CheckRow makeRow(const std::string& label, const std::string& test, double wiThe
   return row;
 }
 
-CheckRow chiSquareRow(const std::string& label, const std::string& test, double wiTheta,
-                      const ChiSquareResult& r) {
-  CheckRow row = makeRow(label, test, wiTheta, r.statistic, r.threshold, r.passed,
-                         r.failure.empty() ? std::to_string(r.pooledCells) + " cells pooled" : r.failure);
-  row.dof = r.dof;
-  row.pValue = r.pValue;
-  return row;
+// Values no model may return, counted: drawn samples whose weight or pdf is not finite or
+// negative, and cells whose integral of pdf is not finite or negative, or of f |cos| not finite
+// (eval or pdf went wrong at some quadrature point; a negative eval shows in the albedo rows,
+// where the Richardson-corrected quadrature of a narrow lobe may also dip a hair below 0).
+// Any of them fails the row; other rows fail or mislead too, but only this one counts them.
+CheckRow invalidValuesRow(const std::string& label, double wiTheta, const SampleHistogram& histogram,
+                          const std::vector<glm::dvec4>& cells) {
+  size_t badCells = 0;
+  for (const glm::dvec4& c : cells)
+    badCells +=
+        !(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w) && c.x >= 0);
+  const size_t bad = histogram.invalidSamples + badCells;
+  std::string note = std::to_string(histogram.invalidSamples) + " of " +
+                     std::to_string(histogram.sampleCount) +
+                     " drawn samples with a weight or pdf that is not finite or negative; " +
+                     std::to_string(badCells) + " of " + std::to_string(cells.size()) +
+                     " cells whose integral of pdf is not finite or negative, or of f |cos| not finite";
+  if (!histogram.firstInvalid.empty()) note += "; first sample: " + histogram.firstInvalid;
+  return makeRow(label, "invalid values", wiTheta, double(bad), 0.0, bad == 0, note);
 }
 
 double perTestThreshold(const BsdfCheckOptions& options, int runCount) {
@@ -98,10 +111,12 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
   CheckReport report;
 
   const SampleHistogram histogram = drawSamples(grid, bsdfDirectionSampler(model, wi, mode), n, seed);
-  const std::vector<glm::dvec4> cells =
-      integrateCells(grid, bsdfEnergyIntegrand(model, wi, mode), histogram.probes, kitQuadrature(n));
+  const auto integrals =
+      integrateCellsWithError(grid, bsdfEnergyIntegrand(model, wi, mode), histogram.probes, kitQuadrature(n));
+  const std::vector<glm::dvec4>& cells = integrals.values;
   const ChiSquareResult chi = chiSquareVerdict(histogram, pdfPart(cells), grid, n, threshold);
   report.rows.push_back(chiSquareRow(label, "chi2", wiTheta, chi));
+  report.rows.push_back(invalidValuesRow(label, wiTheta, histogram, cells));
 
   // Weights must match eval |cos| / pdf in whichever mode a caller uses: with transmission,
   // both modes are checked, and how they relate. The second mode's checks are per-sample
@@ -126,12 +141,16 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
                                   ConsistencyTolerance, modes.passed(), note));
   }
 
-  const EnergyResult energy = energyFromIntegrals(cells, histogram);
+  const EnergyResult energy = energyFromIntegrals(cells, integrals.errors, histogram);
+  const bool quadratureResolved = energy.pdfIntegralError <= NormalisationQuadratureLimit;
   report.rows.push_back(
       makeRow(label, "normalisation", wiTheta, energy.normalisationError, energy.normalisationTolerance,
-              energy.normalisationError <= energy.normalisationTolerance,
-              format("integral of pdf %.6f + delta %.6f vs 1 - P(fail) = %.6f", energy.pdfIntegral,
-                     energy.deltaProbability, 1.0 - energy.failureProbability)));
+              quadratureResolved && energy.normalisationError <= energy.normalisationTolerance,
+              format("integral of pdf %.8f (quadrature error estimate %.1e)", energy.pdfIntegral,
+                     energy.pdfIntegralError) +
+                  format(" + delta %.8f vs 1 - P(fail) = %.8f", energy.deltaProbability,
+                         1.0 - energy.failureProbability) +
+                  (quadratureResolved ? "" : "; the quadrature did not resolve the pdf")));
 
   const double maxAlbedo = std::max({energy.albedo.x, energy.albedo.y, energy.albedo.z});
   const std::string quadratureMode =
@@ -156,8 +175,12 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
   if (model.isLossless()) {
     const double deviation = std::max(
         {std::abs(energy.albedo.x - 1), std::abs(energy.albedo.y - 1), std::abs(energy.albedo.z - 1)});
-    report.rows.push_back(makeRow(label, "furnace", wiTheta, deviation, FurnaceTolerance,
-                                  deviation <= FurnaceTolerance, "lossless model: |albedo - 1| per channel"));
+    const double quadratureError =
+        std::max({energy.albedoError.x, energy.albedoError.y, energy.albedoError.z});
+    report.rows.push_back(
+        makeRow(label, "furnace", wiTheta, deviation, FurnaceTolerance, deviation <= FurnaceTolerance,
+                format("lossless model: |albedo - 1| per channel (quadrature error estimate %.1e)",
+                       quadratureError)));
   }
 
   if (options.imageDir && (!options.imagesOnFailureOnly || !report.passed()))

@@ -10,17 +10,6 @@
 
 namespace scatterlab {
 
-// The transport mode of the kit's energy checks (albedo, Monte Carlo albedo, furnace) and of
-// the histogram whose delta weights enter the albedo. Through a refraction, radiance is
-// scaled by 1 / etaRel^2 (the refracted beam's solid angle changes; Veach 1997 section 5.2):
-// radiance is not a conserved quantity, and its "albedo" exceeds 1 for light leaving a denser
-// medium although no energy is created. Power is conserved, and importance transport carries
-// it: integral of f(wi, wo, Importance) |cos wo| dwo is the fraction of the power arriving
-// from wi that is scattered. For reflection the two modes agree.
-template <typename Model> TransportMode energyTransportMode(const Model& model) {
-  return hasAny(model.flags(), LobeFlags::Transmission) ? TransportMode::Importance : TransportMode::Radiance;
-}
-
 // One draw of the model's sampler with the kit's random numbers: uLobe first, then u.
 // Both the histogram pass and the consistency pass use this, so sample i is the same in both.
 template <typename Model>

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "validation/chi_square.h"
+
 namespace scatterlab {
 
 bool CheckReport::passed() const {
@@ -16,6 +18,33 @@ const CheckRow* CheckReport::find(const std::string& test, double wiThetaDeg) co
   for (const CheckRow& row : rows)
     if (row.test == test && row.wiThetaDeg && *row.wiThetaDeg == wiThetaDeg) return &row;
   return nullptr;
+}
+
+CheckRow chiSquareRow(const std::string& material, const std::string& test, std::optional<double> wiThetaDeg,
+                      const ChiSquareResult& result) {
+  CheckRow row;
+  row.material = material;
+  row.test = test;
+  row.wiThetaDeg = wiThetaDeg;
+  row.passed = result.passed;
+  row.dof = result.dof;
+  if (result.hasPValue()) {
+    row.statistic = result.statistic;
+    row.pValue = result.pValue;
+    row.threshold = result.threshold;
+    row.note = result.failure.empty() ? std::to_string(result.pooledCells) + " cells pooled" : result.failure;
+    return row;
+  }
+  // No degrees of freedom: no p-value is invented; the row shows the count test instead.
+  row.statistic = result.countZ;
+  row.threshold = CountSigmas;
+  char note[160];
+  std::snprintf(note, sizeof note,
+                "no degrees of freedom (every sample in one scored cell): no p-value; count |O - E| / "
+                "sqrt(E) = %.3g",
+                result.countZ);
+  row.note = result.failure.empty() ? std::string(note) : result.failure;
+  return row;
 }
 
 std::string formatTable(const CheckReport& report) {

@@ -9,6 +9,8 @@
 
 namespace scatterlab {
 
+struct ChiSquareResult;
+
 // One row per test: chi-square (statistic, dof, p-value, threshold = Sidak-corrected
 // significance, passes when p >= threshold) or a bound check (statistic, threshold, passes
 // when statistic <= threshold).
@@ -31,6 +33,12 @@ struct CheckReport {
   const CheckRow* find(const std::string& test, double wiThetaDeg) const;
   void append(const CheckReport& other) { rows.insert(rows.end(), other.rows.begin(), other.rows.end()); }
 };
+
+// The row of a chi-square test: statistic, dof, p-value against the Sidak-corrected threshold;
+// with no degrees of freedom no p-value exists, and the row shows the count test
+// (|O - E| / sqrt(E) against CountSigmas) and says so.
+CheckRow chiSquareRow(const std::string& material, const std::string& test, std::optional<double> wiThetaDeg,
+                      const ChiSquareResult& result);
 
 // Fixed-width table, one row per line, for the terminal.
 std::string formatTable(const CheckReport& report);

@@ -1,5 +1,6 @@
 #include "validation/chi_square.h"
 
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -112,10 +113,14 @@ ChiSquareResult chiSquareFromTables(const Table2D& observed, const Table2D& expe
                   ": the pdf is negative or not finite there";
       return r;
     }
-    if (e == 0.0 && o > 1e-5 * double(sampleCount)) {
+    if (e == 0.0 && o > 0.0) {
+      // The pdf integrates to exactly 0 here although the quadrature evaluated it at the
+      // centroid of these very samples (integrateCells' probe): the sampler leaves the pdf's
+      // support. Pooling would hide them (a pool of zero expectation cannot be scored), so
+      // they reject, however few.
       std::ostringstream msg;
-      msg << o << " samples in cell (row " << i / observed.cols << ", col " << i % observed.cols
-          << ") where the pdf integrates to 0: the sampler leaves the pdf's support";
+      msg << o << " of " << sampleCount << " samples in cell (row " << i / observed.cols << ", col "
+          << i % observed.cols << ") where the pdf integrates to 0: the sampler leaves the pdf's support";
       r.failure = msg.str();
       return r;
     }
@@ -140,11 +145,19 @@ ChiSquareResult chiSquareFromTables(const Table2D& observed, const Table2D& expe
   r.dof = scored - 1;
   if (r.dof < 1) {
     // Every sample fell into one scored cell (a delta lobe, or a lobe narrower than a cell):
-    // a chi-square with 0 degrees of freedom has no distribution. What is left to test is
-    // that the count matches, |O - E| <= 5 sigma, reported as p = 1 or 0.
+    // a chi-square with 0 degrees of freedom has no distribution, so there is no p-value. What
+    // is left to test is the count itself, O ~ Binomial(N, E / N) ~ Normal(E, E): it must lie
+    // within CountSigmas standard deviations of E.
     r.dof = 0;
-    r.pValue = chi2 <= 25.0 ? 1.0 : 0.0;
-    r.passed = r.pValue >= threshold;
+    r.pValue = std::numeric_limits<double>::quiet_NaN();
+    r.countZ = std::sqrt(chi2);
+    r.passed = r.countZ <= CountSigmas;
+    if (!r.passed) {
+      std::ostringstream msg;
+      msg << "no degrees of freedom (one scored cell): the count is " << r.countZ
+          << " standard deviations from its expectation, more than " << CountSigmas;
+      r.failure = msg.str();
+    }
     return r;
   }
   r.pValue = Eigen::numext::igammac(0.5 * r.dof, 0.5 * chi2);

@@ -137,11 +137,15 @@ template <int N> double scalarPart(const glm::vec<N, double>& v) { return v[0]; 
 // than its facets, reaches 1e-9), below the finest step adaptive Simpson takes in a whole
 // cell. A pole cell whose probe lies at d from the pole is therefore also cut at 4 d, 16 d,
 // 64 d, ... from it, so that the pieces grow geometrically from the lobe's scale.
-template <typename Integrand> auto integrateCells(const SphericalGrid& grid, const Integrand& integrand,
-                                                  const std::vector<Vec2d>& probes,
-                                                  const QuadratureOptions& options) {
+// Returns the integrals and, per cell, the quadrature's own error estimate (quadrature.h
+// QuadratureEstimate), summed over the cell's pieces.
+template <typename Integrand>
+auto integrateCellsWithError(const SphericalGrid& grid, const Integrand& integrand,
+                             const std::vector<Vec2d>& probes, const QuadratureOptions& options) {
   using V = decltype(integrand(Vec3d(0, 0, 1)));
-  std::vector<V> result(grid.cellCount(), V(0.0));
+  struct CellIntegrals {
+    std::vector<V> values, errors;
+  } result{std::vector<V>(grid.cellCount(), V(0.0)), std::vector<V>(grid.cellCount(), V(0.0))};
   tbb::parallel_for(
       tbb::blocked_range<int>(0, grid.cellCount(), 16), [&](const tbb::blocked_range<int>& range) {
         for (int cell = range.begin(); cell != range.end(); ++cell) {
@@ -167,35 +171,55 @@ template <typename Integrand> auto integrateCells(const SphericalGrid& grid, con
           std::sort(cosCuts, cosCuts + nCos);
           if (phiCuts[0] < probe.y && probe.y < phiHi) phiCuts[nPhi++] = probe.y;
           phiCuts[nPhi++] = phiHi;
-          V sum = V(0.0);
+          V sum = V(0.0), error = V(0.0);
           for (int i = 0; i + 1 < nCos; ++i)
-            for (int j = 0; j + 1 < nPhi; ++j)
-              sum = sum + adaptiveSimpson2D(
-                              [&](double cosTheta, double phi) {
-                                return integrand(SphericalGrid::direction(cosTheta, phi));
-                              },
-                              cosCuts[i], cosCuts[i + 1], phiCuts[j], phiCuts[j + 1], options);
-          result[cell] = sum;
+            for (int j = 0; j + 1 < nPhi; ++j) {
+              const QuadratureEstimate<V> piece = adaptiveSimpson2DEstimate(
+                  [&](double cosTheta, double phi) {
+                    return integrand(SphericalGrid::direction(cosTheta, phi));
+                  },
+                  cosCuts[i], cosCuts[i + 1], phiCuts[j], phiCuts[j + 1], options);
+              sum = sum + piece.value;
+              error = error + piece.error;
+            }
+          result.values[cell] = sum;
+          result.errors[cell] = error;
         }
       });
   return result;
 }
 
+template <typename Integrand> auto integrateCells(const SphericalGrid& grid, const Integrand& integrand,
+                                                  const std::vector<Vec2d>& probes,
+                                                  const QuadratureOptions& options) {
+  return integrateCellsWithError(grid, integrand, probes, options).values;
+}
+
+// A chi-square test with no degrees of freedom (every sample in one scored cell) has no
+// distribution: it tests the count alone, |O - E| / sqrt(E) <= CountSigmas (a Gaussian beyond
+// 5 sigma has probability 6e-7).
+inline constexpr double CountSigmas = 5.0;
+
 struct ChiSquareResult {
   double statistic = 0.0;
   int dof = 0;
+  // p = Q(dof / 2, chi2 / 2); NaN when dof = 0, where no p-value exists (hasPValue()).
   double pValue = 0.0;
   double threshold = 0.0;  // significance level the p-value is compared with
   bool passed = false;
   std::string failure;  // set when rejected for a reason other than the p-value
   int pooledCells = 0;  // cells merged into the low-expectation pool
+  double countZ = 0.0;  // dof = 0 only: |O - E| / sqrt(E) of the one scored cell
   Table2D observed, expected;
+
+  bool hasPValue() const { return dof > 0; }
 };
 
 // Pools cells with expected < minExpected into one cell (sorted by expectation; a pool that
-// stays below minExpected is merged with the next cell), rejects at once when a cell with
-// zero expectation holds more than 1e-5 N samples, and computes
-// chi2 = sum (O - E)^2 / E, dof = scored cells - 1, p = Q(dof / 2, chi2 / 2).
+// stays below minExpected is merged with the next cell), rejects at once when any sample lies
+// in a cell whose expectation is 0, and computes chi2 = sum (O - E)^2 / E,
+// dof = scored cells - 1, p = Q(dof / 2, chi2 / 2). With dof = 0 there is no p-value: the
+// one cell's count is tested against CountSigmas instead.
 ChiSquareResult chiSquareFromTables(const Table2D& observed, const Table2D& expected, size_t sampleCount,
                                     double threshold, double minExpected = 5.0);
 

@@ -18,6 +18,10 @@ std::string safeFileStem(const std::string& label) {
   return s;
 }
 
+std::vector<std::string> chiSquareImageSuffixes() {
+  return {"_observed.png", "_expected.png", "_residual.png", "_consistency.png", "_tables.json"};
+}
+
 void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem,
                           const ChiSquareResult& chi, const std::string& layout,
                           const Table2D* consistencyMaxError, double consistencyTolerance) {

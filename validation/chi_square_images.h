@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "validation/chi_square.h"
 
@@ -19,6 +20,9 @@ std::string safeFileStem(const std::string& label);
 // `dir` (created if missing; files written atomically). With `consistencyMaxError`, also
 // STEM_consistency.png (scaled so that `consistencyTolerance` sits a tenth of the way up) and
 // its table.
+// The endings of the names writeChiSquareImages gives its files ("_observed.png", ...).
+std::vector<std::string> chiSquareImageSuffixes();
+
 void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem,
                           const ChiSquareResult& chi, const std::string& layout,
                           const Table2D* consistencyMaxError = nullptr, double consistencyTolerance = 0.0);

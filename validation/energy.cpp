@@ -2,25 +2,31 @@
 
 namespace scatterlab {
 
-double normalisationTolerance(double failureProbability, size_t samples) {
+double normalisationTolerance(double failureProbability, size_t samples, double quadratureError) {
   const double p = failureProbability;
-  return std::max(1e-3, 4.0 * std::sqrt(p * (1.0 - p) / double(std::max<size_t>(samples, 1))));
+  return std::max(NormalisationTarget, quadratureError) +
+         4.0 * std::sqrt(p * (1.0 - p) / double(std::max<size_t>(samples, 1)));
 }
 
 EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals,
+                                 const std::vector<glm::dvec4>& cellErrors,
                                  const SampleHistogram& histogram) {
   EnergyResult r;
-  glm::dvec4 total(0.0);
+  glm::dvec4 total(0.0), error(0.0);
   for (const glm::dvec4& v : cellIntegrals) total += v;
+  for (const glm::dvec4& e : cellErrors) error += e;
   r.pdfIntegral = total.x;
+  r.pdfIntegralError = error.x;
   r.albedo = Rgb(total.y, total.z, total.w);
+  r.albedoError = Rgb(error.y, error.z, error.w);
   for (const DeltaDirection& d : histogram.deltas) {
     r.deltaProbability += d.probability;
     r.albedo += d.probability * d.weight;  // E[weight] restricted to the delta lobe
   }
   r.failureProbability = double(histogram.failedSamples) / double(std::max<size_t>(histogram.sampleCount, 1));
   r.normalisationError = std::abs(r.pdfIntegral + r.deltaProbability - (1.0 - r.failureProbability));
-  r.normalisationTolerance = normalisationTolerance(r.failureProbability, histogram.sampleCount);
+  r.normalisationTolerance =
+      normalisationTolerance(r.failureProbability, histogram.sampleCount, r.pdfIntegralError);
   return r;
 }
 

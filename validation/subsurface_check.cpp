@@ -35,22 +35,9 @@ CheckRow boundRow(const std::string& label, const std::string& test, double stat
   return row;
 }
 
-CheckRow chiSquareRow(const std::string& label, const std::string& test, const ChiSquareResult& r) {
-  CheckRow row;
-  row.material = label;
-  row.test = test;
-  row.statistic = r.statistic;
-  row.dof = r.dof;
-  row.pValue = r.pValue;
-  row.threshold = r.threshold;
-  row.passed = r.passed;
-  row.note = r.failure.empty() ? std::to_string(r.pooledCells) + " cells pooled" : r.failure;
-  return row;
-}
-
 // A control row passes when the kit rejects.
 CheckRow controlRow(const std::string& label, const std::string& test, const ChiSquareResult& r) {
-  CheckRow row = chiSquareRow(label, test, r);
+  CheckRow row = chiSquareRow(label, test, std::nullopt, r);
   row.passed = !r.passed;
   row.note = (r.passed ? "NOT rejected: the kit cannot see this error; " : "rejected; ") + row.note;
   return row;
@@ -176,7 +163,7 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
     const uint64_t seed = deriveSeed(options.seed, uint64_t(c));
     const ChiSquareResult radius =
         radiusChiSquare(profile, profile, c, options.radiusBins, options.samples, seed, alpha);
-    out.rows.push_back(chiSquareRow(label, "radius chi2" + channel, radius));
+    out.rows.push_back(chiSquareRow(label, "radius chi2" + channel, std::nullopt, radius));
     maybeWriteImages(options, label, std::string("radius_") + ChannelNames[c], radius,
                      "one row: radius bins equal in the radius CDF, from r = 0 outward");
     const RadiusConsistency consistency =
@@ -201,8 +188,8 @@ CheckReport runSubsurfaceChecks(const SeparableBssrdf& bssrdf, const std::string
         sampler, profile, frame, [&](const Vec2d& p) { return probeExitPdfOnPlane(sampler, axes, p); },
         options.probeRings, options.probeSectors, options.samples,
         deriveSeed(options.seed, 10 + uint64_t(frame)), alpha);
-    out.rows.push_back(
-        chiSquareRow(label, std::string("probe chi2 (") + toString(frame) + " frame)", probe.chiSquare));
+    out.rows.push_back(chiSquareRow(label, std::string("probe chi2 (") + toString(frame) + " frame)",
+                                    std::nullopt, probe.chiSquare));
     maybeWriteImages(
         options, label, std::string("probe_") + toString(frame), probe.chiSquare,
         "row-major; rows: rings around the entry point from the centre outward (equal in the radial CDF, "

@@ -1,5 +1,6 @@
 #include "app/lab/chart.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -46,6 +47,26 @@ size_t Chart::dataPointCount() const {
   return count;
 }
 
+std::pair<std::optional<double>, std::optional<double>> Chart::axisRange(int axis) const {
+  const bool logAxis = axis == 0 ? logX : logY;
+  std::optional<double> lo = axis == 0 ? xMin : yMin, hi = axis == 0 ? xMax : yMax;
+  if (!logAxis || (lo && hi)) return {lo, hi};
+  double dataLo = INFINITY, dataHi = -INFINITY;
+  for (const ChartSeries& s : series) {
+    if (s.style == SeriesStyle::Guide || !s.setsRange) continue;
+    for (const std::vector<Vec2d>* points : {&s.points, &s.bandLower, &s.bandUpper})
+      for (const Vec2d& p : *points)
+        if (drawable(*this, p)) {
+          dataLo = std::min(dataLo, p[axis]);
+          dataHi = std::max(dataHi, p[axis]);
+        }
+  }
+  if (dataLo > dataHi) return {lo, hi};  // no data: Chart.js finds its own range
+  if (!lo) lo = dataLo / LogAxisMargin;
+  if (!hi) hi = dataHi * LogAxisMargin;
+  return {lo, hi};
+}
+
 json Chart::toJson() const {
   json seriesJson = json::array();
   for (const ChartSeries& s : series) {
@@ -57,6 +78,8 @@ json Chart::toJson() const {
       entry["band"] = {{"lower", pointsJson(*this, s.bandLower)}, {"upper", pointsJson(*this, s.bandUpper)}};
     seriesJson.push_back(std::move(entry));
   }
+  const auto [x0, x1] = axisRange(0);
+  const auto [y0, y1] = axisRange(1);
   return {{"id", id},
           {"kind", kindName(kind)},
           {"title", title},
@@ -64,10 +87,10 @@ json Chart::toJson() const {
           {"y_label", yLabel},
           {"log_x", logX},
           {"log_y", logY},
-          {"x_min", optionalJson(xMin)},
-          {"x_max", optionalJson(xMax)},
-          {"y_min", optionalJson(yMin)},
-          {"y_max", optionalJson(yMax)},
+          {"x_min", optionalJson(x0)},
+          {"x_max", optionalJson(x1)},
+          {"y_min", optionalJson(y0)},
+          {"y_max", optionalJson(y1)},
           {"series", std::move(seriesJson)}};
 }
 

@@ -7,10 +7,16 @@
 //
 // Points that cannot be drawn are left out when the chart is written: non-finite
 // coordinates, and values <= 0 on a log axis. JSON therefore never holds NaN.
+//
+// A log axis without an explicit range spans the data: the drawable points of the series that
+// set the range (not guides, and not a model's curve drawn over the data, which may fall to
+// 1e-247 where the data ends and would flatten the data into one line), widened by
+// LogAxisMargin at both ends. A curve beyond that range is clipped by the chart.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -33,7 +39,12 @@ struct ChartSeries {
   SeriesStyle style = SeriesStyle::Line;
   std::vector<Vec2d> points;
   std::vector<Vec2d> bandLower, bandUpper;  // empty: no band
+  // False for a model's curve over the data (a fit): it does not set a log axis's range.
+  bool setsRange = true;
 };
+
+// The factor by which a log axis's automatic range extends beyond the data at either end.
+inline constexpr double LogAxisMargin = 1.5;
 
 struct Chart {
   std::string id;  // unique in the page (the canvas's id)
@@ -45,6 +56,9 @@ struct Chart {
 
   // Drawable points of every series that is not a guide.
   size_t dataPointCount() const;
+  // The range of axis 0 (x) or 1 (y) as written: the explicit one where set; for a log axis
+  // without one, the data's (see above); otherwise open (nullopt) ends.
+  std::pair<std::optional<double>, std::optional<double>> axisRange(int axis) const;
   nlohmann::json toJson() const;
 };
 

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <map>
 
 #include "app/check_command.h"
 #include "app/lab/html.h"
+#include "materials/core/bounded_file.h"
+#include "materials/core/json_text.h"
 #include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/subsurface_check.h"
@@ -58,8 +59,13 @@ std::vector<MapSet> findMaps(const fs::path& dir) {
     MapSet set;
     set.stem = name.substr(0, name.size() - suffix.size());
     set.consistency = fs::exists(dir / (set.stem + "_consistency.png"));
-    std::ifstream tables(dir / (set.stem + "_tables.json"));
-    const json parsed = json::parse(tables, nullptr, /*allow_exceptions=*/false);
+    // Written by this run; read with the limits of every JSON input all the same. Its layout
+    // only labels the maps, so an unreadable one leaves the label empty.
+    json parsed;
+    try {
+      const fs::path tables = dir / (set.stem + "_tables.json");
+      parsed = parseJsonText(readFileBounded(tables, MaxJsonFileBytes, "chi-square tables"), tables.string());
+    } catch (const std::exception&) {}
     if (parsed.is_object()) set.layout = parsed.value("layout", std::string());
     maps.push_back(std::move(set));
   }

@@ -119,7 +119,7 @@ Chart sliceChart(const std::string& id, const MeasuredSlice& slice, const Family
     const std::string label = "theta_d " + html::degrees(thetaDiffCentreDeg(d));
     chart.series.push_back(
         {label + " data", paletteColor(i), SeriesStyle::Points, sliceAlongThetaHalf(slice, d), {}, {}});
-    ChartSeries curve{label + " fit", paletteColor(i), SeriesStyle::Line, {}, {}, {}};
+    ChartSeries curve{label + " fit", paletteColor(i), SeriesStyle::Line, {}, {}, {}, /*setsRange=*/false};
     for (int h = 0; h < merl::ThetaHalfCells; ++h) {
       const auto [wi, wo] =
           directionsFromHalfDiff(merl::thetaHalfAt(h + 0.5), 0.0, merl::thetaDiffAt(d + 0.5), phiDiff);
@@ -167,10 +167,15 @@ MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& setting
       options.progress = [&, i](const std::string& stage, double fraction) {
         progress("fit " + spec + " " + stage, (double(i) + fraction) / double(settings.fitFamilies.size()));
       };
-    if (!samples.empty()) f.result = fitBrdf(*f.model, samples, options);
-    f.written = writeMaterial(f.model->fittedParts(f.result.x.data()));
-    f.verdict = samples.empty() ? FitVerdict{false, {"the table has no usable cells"}}
-                                : judgeFit(f.result, f.written, DefaultMaxRelativeError);
+    if (samples.empty()) {
+      // Nothing to fit: no parameters to write (fittedParts would read them).
+      f.written = {std::nullopt, "the table has no usable cells"};
+      f.verdict = FitVerdict{false, {"the table has no usable cells"}};
+    } else {
+      f.result = fitBrdf(*f.model, samples, options);
+      f.written = writeMaterial(f.model->fittedParts(f.result.x.data()));
+      f.verdict = judgeFit(f.result, f.written, DefaultMaxRelativeError);
+    }
     fits.families.push_back(std::move(f));
   }
   return fits;

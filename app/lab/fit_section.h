@@ -5,8 +5,11 @@
 // (fit_verdict.h), and its curve over the data on the theta_h slices of measured_section.h.
 //
 // Families: Lambert + Ngan's Cook-Torrance, Lambert + GGX (a white conductor), Lambert +
-// Ngan's Ward, Lambert + Blinn-Phong. Quick mode fits them on a stratified subset of the
-// table, the full report on every usable cell (lab_settings.h).
+// Ngan's Ward, and Blinn-Phong, whose own kd is its diffuse term (a Lambertian beside it would
+// be a second diffuse term that the data cannot tell apart from kd: a rank-deficient fit).
+// Every family is identifiable, and a rank-deficient fit is POOR (fit_verdict.h). Quick mode
+// fits them on a stratified subset of the table, the full report on every usable cell
+// (lab_settings.h).
 #pragma once
 
 #include <memory>

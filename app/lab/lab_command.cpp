@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/explorer/explorer_page.h"
 #include "app/lab/check_section.h"
 #include "app/lab/fit_section.h"
 #include "app/lab/html.h"
@@ -21,6 +22,8 @@
 #include "app/lab/staged_directory.h"
 #include "app/lab/subsurface_section.h"
 #include "app/option_values.h"
+#include "app/output_guard.h"
+#include "app/plugin_option.h"
 #include "app/progress.h"
 
 namespace scatterlab {
@@ -116,7 +119,13 @@ class MaterialReporter {
   void addSubsurfaceSection() {
     const SubsurfaceComparison comparison =
         timer_.time("walk", m_.name, [&] { return compareWithWalk(*m_.subsurface, settings_, progress_); });
-    report_.sections.push_back(subsurfaceSection(m_, comparison));
+    ReportSection section = subsurfaceSection(m_, comparison);
+    // Walk paths that stopped being finite fail the material, as a failed check.
+    if (const uint64_t nonFinite = section.data.value("non_finite_paths", uint64_t(0)); nonFinite > 0) {
+      report_.passed = false;
+      report_.verdict += "; " + std::to_string(nonFinite) + " walk paths not finite";
+    }
+    report_.sections.push_back(std::move(section));
     Rgb walk(0.0), se(0.0);
     double worst = 0;
     for (int c = 0; c < 3; ++c) {
@@ -134,6 +143,13 @@ class MaterialReporter {
     ReportSection renders = timer_.time("render", m_.name, [&] {
       return rendersSection(m_, m_.table ? &fits_ : nullptr, settings_, environments_, dir_, progress_);
     });
+    // Samples the film dropped (not finite or negative) fail the material, as a failed check.
+    if (const uint64_t dropped = renders.data.value("dropped_samples", uint64_t(0)); dropped > 0) {
+      report_.passed = false;
+      report_.verdict += "; " + std::to_string(dropped) + " render samples dropped";
+      report_.keyNumbers.push_back(
+          {"renders", std::to_string(dropped) + " samples dropped (not finite or negative)"});
+    }
     if (const std::string refusal = renderRefusal(renders); !refusal.empty())
       report_.keyNumbers.push_back({"renders", "not rendered: " + refusal});
     if (const std::string closest = closestFitInRenders(renders); !closest.empty())
@@ -175,7 +191,7 @@ void printSummary(const std::vector<MaterialReport>& reports, const fs::path& in
                       {"passed", allPassed},
                       {"materials", materials},
                       {"timings", timer.toJson()}}
-                     .dump(2)
+                     .dump(2, ' ', false, json::error_handler_t::replace)
               << "\n";
     return;
   }
@@ -212,22 +228,31 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
       ->type_name("FILE")
       ->allow_extra_args(false);  // one file per --env: a MATERIAL after it stays a material
   command->add_flag("--json", options.json, "Print the verdicts, the report's path and the timings as JSON");
+  addPluginOption(*command);
   return command;
 }
 
 int runLabCommand(const LabCommandOptions& options) {
   // Every input is checked before the first file is written.
   std::vector<LabMaterial> materials;
-  for (const std::string& argument : options.materials) materials.push_back(loadLabMaterial(argument));
+  std::vector<InputPath> inputs;
+  for (const std::string& argument : options.materials) {
+    materials.push_back(loadLabMaterial(argument));
+    addMaterialInputs(inputs, argument, materials.back().description);
+  }
   makeNamesUnique(materials);
-  const std::vector<LabEnvironment> environments =
-      loadLabEnvironments(options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments);
-  StagedDirectory staged(options.out, ReportMarkerFile, ReportGenerator, "--out");
+  const std::vector<std::string> environmentFiles =
+      options.environments.empty() ? defaultLabEnvironmentFiles() : options.environments;
+  const std::vector<LabEnvironment> environments = loadLabEnvironments(environmentFiles);
+  for (const std::string& file : environmentFiles) inputs.push_back({"environment map (--env)", file});
+  if (options.materials.empty())
+    if (const auto cache = showcaseCacheDirectory()) inputs.push_back({"showcase's table cache", *cache});
+  StagedDirectory staged(options.out, ReportGenerator, "--out", inputs);
 
   const LabSettings settings =
       options.quick ? LabSettings::quickMode(options.seed) : LabSettings::fullMode(options.seed);
   ProgressLine progress;
-  PhaseTimer timer(true, [&progress] { progress.clear(); });
+  PhaseTimer timer(!progressIsQuiet(), [&progress] { progress.clear(); });
   const auto start = std::chrono::steady_clock::now();
   if (materials.empty())
     materials = showcaseLabMaterials(staged.path() / "scratch", timer, progress.callback("showcase"));
@@ -238,6 +263,13 @@ int runLabCommand(const LabCommandOptions& options) {
     reports.push_back(
         MaterialReporter(materials[i], settings, environments, staged.path(), timer, progress, step).run());
   }
+  // The explorer, preloaded with every material (each section links to it), before the scratch
+  // tables it embeds are removed.
+  timer.time("explorer", "", [&] {
+    std::vector<ExplorerMaterial> explorerMaterials;
+    for (const LabMaterial& m : materials) explorerMaterials.push_back({m.folder, m.name, m.description});
+    writeExplorer(staged.path() / LabExplorerFolder, explorerMaterials);
+  });
   std::error_code error;
   fs::remove_all(staged.path() / "scratch", error);  // tables of a showcase that had no cache directory
 
@@ -252,9 +284,10 @@ int runLabCommand(const LabCommandOptions& options) {
   timer.time("write", "", [&] { writeReport(staged.path(), run, reports); });
   staged.commit();
   progress.clear();
-  std::fprintf(stderr, "lab: total %.2f s; open %s\n",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-               (staged.target() / "index.html").c_str());
+  if (!progressIsQuiet())
+    std::fprintf(stderr, "lab: total %.2f s; open %s\n",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                 (staged.target() / "index.html").c_str());
   printSummary(reports, staged.target() / "index.html", options.json, timer);
   bool allPassed = true;
   for (const MaterialReport& r : reports) allPassed = allPassed && r.passed;

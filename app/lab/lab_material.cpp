@@ -2,7 +2,11 @@
 
 #include <set>
 
+#include "app/json_output.h"
+#include "app/lab/report_page.h"
+#include "app/lab/staged_directory.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/core/quoted.h"
 #include "materials/measured/tabulated_brdf.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
@@ -19,8 +23,6 @@ bool endsWith(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
-
-std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 LabMaterial loadMeasured(std::string name, const fs::path& file) {
   try {
@@ -78,7 +80,7 @@ LabMaterial describedLabMaterial(std::string name, const json& material) {
     m.kind = LabMaterialKind::Analytic;
     m.bsdf = makeBsdf(material);
   }
-  m.about = m.description.dump();
+  m.about = jsonText(m.description, -1);
   return m;
 }
 
@@ -90,12 +92,12 @@ LabMaterial loadLabMaterial(const std::string& argument) {
     const std::string type =
         material.is_object() ? material.value("type", std::string("material")) : "material";
     LabMaterial loaded = fromDescription(type, material);
-    loaded.about = "Given as inline JSON: " + material.dump();
+    loaded.about = "Given as inline JSON: " + jsonText(material, -1);
     return loaded;
   }
   try {
     LabMaterial loaded = fromDescription(fs::path(argument).stem().string(), material);
-    loaded.about = "file " + argument + ": " + loaded.description.dump();
+    loaded.about = "file " + argument + ": " + jsonText(loaded.description, -1);
     return loaded;
   } catch (const MaterialError& error) {
     throw MaterialError("material file " + inQuotes(argument) + ": " + error.what());
@@ -103,7 +105,10 @@ LabMaterial loadLabMaterial(const std::string& argument) {
 }
 
 void makeNamesUnique(std::vector<LabMaterial>& materials) {
-  std::set<std::string> names, folders;
+  // The report's own entries (report_page.h, staged_directory.h) are no material's folder: a
+  // material file called assets.json or index.html.json must not overwrite them.
+  std::set<std::string> names,
+      folders{"assets", "index.html", ReportMarkerFile, DirectoryManifestFile, "scratch"};
   for (LabMaterial& material : materials) {
     const std::string base = material.name;
     for (int copy = 2; !names.insert(material.name).second; ++copy)

@@ -21,7 +21,7 @@ LabSettings common(uint64_t seed) {
   s.fitFamilies = {{"Lambert + Cook-Torrance (Ngan)", "lambertian+ngan-cook-torrance"},
                    {"Lambert + GGX", "lambertian+conductor"},
                    {"Lambert + Ward (Ngan)", "lambertian+ngan-ward"},
-                   {"Lambert + Blinn-Phong", "lambertian+blinn-phong"}};
+                   {"Blinn-Phong", "blinn-phong"}};
   return s;
 }
 

@@ -11,7 +11,7 @@
 // albedo curve            19 angles, quadrature on      19 angles, 32 x 64 cells, 1e5 probes
 //                         16 x 32 cells, 2e4 probes
 // random walk             2e5 paths per channel         2e6 paths per channel
-// fits (metric ngan)      Lambert + Cook-Torrance (Ngan), + GGX, + Ward (Ngan), + Blinn-Phong
+// fits (metric ngan)      Lambert + Cook-Torrance (Ngan), + GGX, + Ward (Ngan); Blinn-Phong
 //                         on a 30,000-cell stratified   on every usable cell (about 1e6)
 //                         subset, 128 grid points,      256 grid points, 3 starts
 //                         2 starts

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "app/data_directory.h"
 #include "app/exit_code.h"
 #include "app/lab/html.h"
 #include "integrator/environment_map_file.h"
@@ -15,10 +16,6 @@
 #include "integrator/silhouette_mask.h"
 #include "materials/core/atomic_file.h"
 #include "materials/registry/parameter_spec.h"
-
-#ifndef SCATTERLAB_DATA_DIR
-#error "SCATTERLAB_DATA_DIR must name the data directory (app/CMakeLists.txt)"
-#endif
 
 namespace scatterlab {
 
@@ -110,6 +107,18 @@ std::string refusalBox(const std::string& label, const std::string& message) {
                        {{"class", "render-refused"}});
 }
 
+// The red box of samples the film dropped (render.h): what rendered and how many.
+std::string droppedBox(const std::string& lines) {
+  return html::element("div",
+                       html::textElement("b", "Samples dropped: the renders below are missing light") +
+                           html::element("br", "") +
+                           html::textElement("span",
+                                             "Samples whose value was not finite or negative count as 0 "
+                                             "in the image (no light transport produces one): ") +
+                           html::element("ul", lines),
+                       {{"class", "failures"}});
+}
+
 // A render and its sphere's statistics.
 struct Rendered {
   RenderResult result;
@@ -135,7 +144,8 @@ std::vector<Subject> subjectsOf(const LabMaterial& material, const MaterialFits*
 }  // namespace
 
 std::vector<std::string> defaultLabEnvironmentFiles() {
-  const fs::path maps = fs::path(SCATTERLAB_DATA_DIR) / "envmaps";
+  const fs::path maps =
+      runtimeDataDirectory("the lab's default environment maps (or give --env)") / "envmaps";
   return {(maps / "studio.exr").string(), (maps / "courtyard.exr").string()};
 }
 
@@ -235,7 +245,8 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
   // results[s][e]: subject s under environment e; empty when the renderer refused s.
   std::vector<std::vector<Rendered>> results(subjects.size());
   json refused = json::array(), renders = json::array();
-  std::string refusals;
+  std::string refusals, droppedLines;
+  uint64_t droppedSamples = 0;
   std::optional<SilhouetteMask> mask;
   for (size_t s = 0; s < subjects.size(); ++s) {
     const Subject& subject = subjects[s];
@@ -273,7 +284,17 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
                          {"sphere_pixels", sphere.pixels},
                          {"seconds", result.statistics.seconds},
                          {"samples", result.statistics.samples},
-                         {"non_finite_samples", result.statistics.nonFiniteSamples}});
+                         {"non_finite_samples", result.statistics.nonFiniteSamples},
+                         {"negative_samples", result.statistics.negativeSamples},
+                         {"dropped_samples", result.statistics.droppedSamples()}});
+      if (const uint64_t dropped = result.statistics.droppedSamples(); dropped > 0) {
+        droppedSamples += dropped;
+        droppedLines += html::textElement(
+            "li", subject.label + " under " + environments[e].name + ": " + std::to_string(dropped) + " of " +
+                      std::to_string(result.statistics.samples) + " samples (" +
+                      std::to_string(result.statistics.nonFiniteSamples) + " not finite, " +
+                      std::to_string(result.statistics.negativeSamples) + " negative)");
+      }
       results[s].push_back({std::move(result), sphere});
     }
   }
@@ -355,7 +376,7 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
     preview = std::move(p.data);
   }
 
-  section.html = refusals + about + body;
+  section.html = (droppedLines.empty() ? "" : droppedBox(droppedLines)) + refusals + about + body;
   section.data = {{"size", {size, size}},
                   {"samples_per_pixel", settings.renderSpp},
                   {"max_depth", settings.renderMaxDepth},
@@ -364,6 +385,7 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
                   {"renders", renders},
                   {"differences", differences},
                   {"refused", refused},
+                  {"dropped_samples", droppedSamples},
                   {"preview", preview}};
   writeTextFileAtomically(materialDir / "renders.json", section.data.dump(1) + "\n");
   return section;

@@ -15,6 +15,10 @@
 // with the renderer's message where its picture would be. No type is special-cased here, so a
 // material the renderer learns to render (subsurface materials, for instance) appears in the
 // report without a change in this file.
+//
+// Samples the film drops (not finite or negative, integrator/render.h) are counted per render
+// and shown in a red box at the top of the section (data: "dropped_samples"); the lab fails
+// the material when there are any.
 #pragma once
 
 #include <filesystem>
@@ -41,7 +45,8 @@ struct LabEnvironment {
 };
 
 // The environment maps a report uses when --env is not given: two of data/envmaps (an
-// interior with soft light, an exterior with a sun).
+// interior with soft light, an exterior with a sun), installed beside the executable
+// (app/data_directory.h).
 std::vector<std::string> defaultLabEnvironmentFiles();
 
 // Reads and checks each map (integrator/environment_map_file.h). A missing, unreadable or

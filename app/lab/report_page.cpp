@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "app/json_output.h"
 #include "app/lab/embedded_assets.h"
 #include "app/lab/html.h"
 #include "materials/core/atomic_file.h"
@@ -52,9 +53,16 @@ std::string materialHtml(const MaterialReport& m) {
   const std::string header =
       html::element("h2", html::escape(m.name) + " " + badge(m.passed)) +
       html::textElement("p", m.about, {{"class", "about"}}) +
+      html::element(
+          "p",
+          html::textElement("a", "Open it in the explorer",
+                            {{"href", std::string(LabExplorerFolder) + "/index.html#" + m.folder},
+                             {"class", "explorer-link"}}) +
+              ": its lobe, f cos, albedo and samples live, computed by the same code in the browser",
+          {{"class", "small"}}) +
       html::element("details",
                     html::textElement("summary", "material description (every default filled in)") +
-                        html::textElement("pre", m.description.dump(2))) +
+                        html::textElement("pre", jsonText(m.description))) +
       html::element("ul", toc, {{"class", "toc"}});
   return html::element("article", header + sections,
                        {{"id", m.folder}, {"class", m.passed ? "material passed" : "material failed"}});
@@ -137,7 +145,7 @@ std::string reportHtml(const ReportRun& run, const std::vector<MaterialReport>& 
       html::textElement("title", run.title) +
       html::voidElement("link", {{"rel", "stylesheet"}, {"href", "assets/report.css"}}) +
       html::element("script", "", {{"src", "assets/chart.umd.min.js"}});
-  const std::string data = html::element("script", html::jsonForScript(chartsJson(materials).dump()),
+  const std::string data = html::element("script", html::jsonForScript(jsonText(chartsJson(materials), -1)),
                                          {{"id", "chart-data"}, {"type", "application/json"}});
   return "<!doctype html>\n" +
          html::element(
@@ -160,7 +168,7 @@ void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<Ma
   bool allPassed = true;
   for (const MaterialReport& m : materials) {
     fs::create_directories(dir / m.folder);
-    writeTextFileAtomically(dir / m.folder / "data.json", materialDataJson(m).dump(1) + "\n");
+    writeTextFileAtomically(dir / m.folder / "data.json", jsonText(materialDataJson(m), 1) + "\n");
     json numbers = json::object();
     for (const auto& [label, value] : m.keyNumbers) numbers[label] = value;
     summary.push_back({{"name", m.name},
@@ -176,7 +184,7 @@ void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<Ma
   const json report{{"generator", ReportGenerator}, {"mode", run.mode},       {"created_at", run.createdAt},
                     {"command", run.command},       {"passed", allPassed},    {"settings", run.settings},
                     {"materials", summary},         {"timings", run.timings}, {"chart_js", chartJsVersion()}};
-  writeTextFileAtomically(dir / ReportMarkerFile, report.dump(1) + "\n");
+  writeTextFileAtomically(dir / ReportMarkerFile, jsonText(report, 1) + "\n");
 }
 
 }  // namespace scatterlab

@@ -17,6 +17,9 @@ namespace scatterlab {
 
 inline constexpr const char* ReportMarkerFile = "report.json";
 inline constexpr const char* ReportGenerator = "scatterlab lab";
+// The explorer preloaded with the report's materials (app/explorer/explorer_page.h): each
+// material's section links to LabExplorerFolder/index.html#FOLDER.
+inline constexpr const char* LabExplorerFolder = "explorer";
 
 struct ReportRun {
   std::string title = "scatterlab lab report";

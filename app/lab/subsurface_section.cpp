@@ -27,8 +27,14 @@ Chart profileChart(const std::string& id, const SubsurfaceComparison& c) {
   chart.yLabel = "R (1/mm^2)";
   chart.logX = chart.logY = true;
   for (int ch = 0; ch < 3; ++ch) {
-    ChartSeries profile{
-        std::string(ChannelNames[ch]) + " profile", channelColor(ch), SeriesStyle::Line, {}, {}, {}};
+    // The walk is the data; the profile, a model, may fall far below it where the walk ends.
+    ChartSeries profile{std::string(ChannelNames[ch]) + " profile",
+                        channelColor(ch),
+                        SeriesStyle::Line,
+                        {},
+                        {},
+                        {},
+                        /*setsRange=*/false};
     ChartSeries walk{
         std::string(ChannelNames[ch]) + " walk", channelColor(ch), SeriesStyle::Points, {}, {}, {}};
     const HalfSpaceWalkResult& w = c.walk[size_t(ch)];
@@ -152,12 +158,30 @@ ReportSection subsurfaceSection(const LabMaterial& material, const SubsurfaceCom
                           {"total_reflectance", w.totalReflectance},
                           {"std_error", w.totalStdError},
                           {"profile", w.profile},
-                          {"profile_std_error", w.profileStdError}}}});
+                          {"profile_std_error", w.profileStdError},
+                          {"non_finite_paths", w.nonFinite}}}});
   }
+  // Walk paths whose position stopped being finite (half_space_walk.h): a red box, and the lab
+  // fails the material.
+  uint64_t nonFinite = 0, paths = 0;
+  for (const HalfSpaceWalkResult& w : c.walk) {
+    nonFinite += w.nonFinite;
+    paths += w.settings.paths;
+  }
+  if (nonFinite > 0)
+    section.html =
+        html::element("div",
+                      html::textElement("b", "Random walk: " + std::to_string(nonFinite) + " of " +
+                                                 std::to_string(paths) + " paths stopped being finite") +
+                          html::element("br", "") +
+                          html::textElement("span", "They are left out of every tally below."),
+                      {{"class", "failures"}}) +
+        section.html;
   section.data = {{"profile_model", s.profile->name()},
                   {"units", "lengths mm, R mm^-2 averaged over each annulus"},
                   {"radius_edges", c.edges},
-                  {"channels", channels}};
+                  {"channels", channels},
+                  {"non_finite_paths", nonFinite}};
   return section;
 }
 

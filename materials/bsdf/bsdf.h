@@ -52,6 +52,17 @@ std::string toString(LobeFlags flags);
 // scaled by 1/eta^2, importance (from the light) is not (Veach 1997, section 5.2).
 enum class TransportMode { Radiance, Importance };
 
+// The transport mode in which energy is counted: the kit's energy checks (albedo, Monte Carlo
+// albedo, furnace), the histogram whose delta weights enter the albedo, the explorer's albedo curve. Through
+// a refraction, radiance is scaled by 1 / etaRel^2 (the refracted beam's solid angle changes; Veach 1997
+// section 5.2): radiance is not a conserved quantity, and its "albedo" exceeds 1 for light leaving a denser
+// medium although no energy is created. Power is conserved, and importance transport carries
+// it: integral of f(wi, wo, Importance) |cos wo| dwo is the fraction of the power arriving
+// from wi that is scattered. For reflection the two modes agree.
+template <typename Model> TransportMode energyTransportMode(const Model& model) {
+  return hasAny(model.flags(), LobeFlags::Transmission) ? TransportMode::Importance : TransportMode::Radiance;
+}
+
 struct BsdfSample {
   Vec3d wo;
   Rgb weight{0.0};   // f * |cos wo| / pdf

@@ -62,4 +62,22 @@ std::optional<BsdfSample> finishSample(const Model& model, const Vec3d& wi, cons
   return BsdfSample{wo, model.eval(wi, wo) * (wo.z / pdf), pdf, lobe, 1.0};
 }
 
+// A reflection model sampled cosine-weighted about the normal, whatever its f: pdf cos / pi and
+// its exact sampler, weight f pi. Derived (final) supplies eval; the exit BSDF of the subsurface
+// renderer and the far-field BRDF of a subsurface material are such models.
+template <typename Derived> class CosineSampledReflection : public BsdfModel {
+ public:
+  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
+    if (wi.z <= 0 || wo.z <= 0) return 0.0;
+    return cosineHemispherePdf(wo.z);
+  }
+  std::optional<BsdfSample> sample(const Vec3d& wi, double, const Vec2d& u,
+                                   TransportMode = TransportMode::Radiance) const override {
+    if (wi.z <= 0) return std::nullopt;
+    return finishSample(static_cast<const Derived&>(*this), wi, sampleCosineHemisphere(u),
+                        LobeFlags::DiffuseReflection);
+  }
+  LobeFlags flags() const override { return LobeFlags::DiffuseReflection; }
+};
+
 }  // namespace scatterlab

@@ -1,7 +1,6 @@
 #include "materials/bsdf/metal_reduction.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -9,6 +8,7 @@
 #include <string>
 
 #include "materials/core/cie.h"
+#include "materials/core/parse_number.h"
 
 namespace scatterlab {
 
@@ -19,7 +19,7 @@ constexpr double VisibleMin = 380.0, VisibleMax = 780.0;
 // Parses one number from [first, last) after skipping blanks; advances first.
 bool parseNumber(const char*& first, const char* last, double& value) {
   while (first != last && (*first == ' ' || *first == '\t' || *first == '\r')) ++first;
-  const auto [end, error] = std::from_chars(first, last, value);
+  const auto [end, error] = fromChars(first, last, value);
   if (error != std::errc() || end == first) return false;
   first = end;
   return true;

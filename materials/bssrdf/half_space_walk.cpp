@@ -60,6 +60,11 @@ WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& s, CounterRng& rng) {
   WalkPath path;
   Vec3d position(0.0), direction = entryDirection(s, rng);
   const double insideOut = 1.0 / s.eta;  // relative index for light leaving the medium
+  // However the path ends, a position that is no longer finite marks it (header comment).
+  const auto end = [&]() -> WalkPath& {
+    path.nonFinite = !isFinite(position);
+    return path;
+  };
   for (;;) {
     const double distance = -std::log1p(-rng.uniform()) / s.extinction;
     if (direction.z > 0 && position.z + distance * direction.z >= 0.0) {
@@ -72,13 +77,13 @@ WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& s, CounterRng& rng) {
       }
       path.escaped = true;
       path.exitRadius = std::hypot(position.x, position.y);
-      return path;
+      return end();
     }
     position += distance * direction;
-    if (rng.uniform() >= s.albedo) return path;  // absorbed
+    if (rng.uniform() >= s.albedo) return end();  // absorbed
     if (++path.scatteringEvents >= s.maxScatteringEvents) {
       path.truncated = true;
-      return path;
+      return end();
     }
     direction = glm::normalize(sampleHenyeyGreenstein(direction, s.g, rng.uniform2D()));
   }
@@ -86,7 +91,9 @@ WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& s, CounterRng& rng) {
 
 void HalfSpaceTally::add(const WalkPath& path, const std::vector<double>& radiusEdges) {
   scatteringEvents += path.scatteringEvents;
-  if (path.truncated) {
+  if (path.nonFinite) {
+    ++nonFinite;
+  } else if (path.truncated) {
     ++truncated;
   } else if (!path.escaped) {
     ++absorbed;
@@ -107,6 +114,7 @@ void HalfSpaceTally::merge(const HalfSpaceTally& other) {
   escaped += other.escaped;
   absorbed += other.absorbed;
   truncated += other.truncated;
+  nonFinite += other.nonFinite;
   scatteringEvents += other.scatteringEvents;
   singleEscaped += other.singleEscaped;
   for (size_t k = 0; k < counts.size(); ++k) {
@@ -130,6 +138,7 @@ HalfSpaceWalkResult halfSpaceWalkResult(const HalfSpaceWalkSettings& settings, c
   result.escaped = tally.escaped;
   result.absorbed = tally.absorbed;
   result.truncated = tally.truncated;
+  result.nonFinite = tally.nonFinite;
   result.scatteringEvents = tally.scatteringEvents;
   result.counts = tally.counts;
   result.singleCounts = tally.singleCounts;

@@ -14,6 +14,10 @@
 // tallied on their own (single scattering), so that a profile of multiple scattering only
 // (the dipoles') can be compared with the rest.
 //
+// A path whose position stops being finite (never expected: the settings are validated) is
+// counted as `nonFinite` and in no other tally, so it can neither vanish into "absorbed" nor
+// reach an annulus; callers report the count and fail when it is not 0.
+//
 // Path i draws from CounterRng(seed, i) and the tallies are integers, so the result is the
 // same for any number of threads. This file holds one path and the tally; the parallel driver
 // over many paths, simulateHalfSpace, is validation/half_space_reference.h (materials stays free
@@ -53,6 +57,7 @@ struct HalfSpaceWalkSettings {
 struct HalfSpaceWalkResult {
   HalfSpaceWalkSettings settings;
   uint64_t escaped = 0, absorbed = 0, truncated = 0;
+  uint64_t nonFinite = 0;         // paths whose position stopped being finite (expected 0)
   uint64_t scatteringEvents = 0;  // over all paths
   double totalReflectance = 0.0, totalStdError = 0.0;
   std::vector<uint64_t> counts;  // escaped paths per annulus
@@ -72,6 +77,7 @@ struct HalfSpaceWalkResult {
 struct WalkPath {
   bool escaped = false;
   bool truncated = false;
+  bool nonFinite = false;   // the position stopped being finite: counted apart, whatever the end
   double exitRadius = 0.0;  // mm from the entry point, when escaped
   uint64_t scatteringEvents = 0;
 };
@@ -81,7 +87,7 @@ WalkPath traceHalfSpacePath(const HalfSpaceWalkSettings& settings, CounterRng& r
 struct HalfSpaceTally {
   std::vector<uint64_t> counts;        // escaped paths per annulus of the settings' radius edges
   std::vector<uint64_t> singleCounts;  // those of them that scattered exactly once
-  uint64_t escaped = 0, absorbed = 0, truncated = 0, scatteringEvents = 0, singleEscaped = 0;
+  uint64_t escaped = 0, absorbed = 0, truncated = 0, nonFinite = 0, scatteringEvents = 0, singleEscaped = 0;
 
   explicit HalfSpaceTally(size_t annuli = 0) : counts(annuli, 0), singleCounts(annuli, 0) {}
   void add(const WalkPath& path, const std::vector<double>& radiusEdges);

@@ -11,11 +11,10 @@
 #include "materials/bsdf/bsdf.h"
 #include "materials/bsdf/cosine_lobe.h"
 #include "materials/bssrdf/separable_bssrdf.h"
-#include "materials/core/warp.h"
 
 namespace scatterlab {
 
-class SubsurfaceExitBsdf final : public BsdfModel {
+class SubsurfaceExitBsdf final : public CosineSampledReflection<SubsurfaceExitBsdf> {
  public:
   explicit SubsurfaceExitBsdf(double eta) : eta_(eta), normalization_(separableNormalization(eta)) {}
 
@@ -23,16 +22,6 @@ class SubsurfaceExitBsdf final : public BsdfModel {
     if (wi.z <= 0 || wo.z <= 0) return Rgb(0.0);
     return Rgb(separableDirectional(wo.z, eta_, normalization_));
   }
-  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode = TransportMode::Radiance) const override {
-    if (wi.z <= 0 || wo.z <= 0) return 0.0;
-    return cosineHemispherePdf(wo.z);
-  }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double, const Vec2d& u,
-                                   TransportMode = TransportMode::Radiance) const override {
-    if (wi.z <= 0) return std::nullopt;
-    return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);  // weight Sw pi
-  }
-  LobeFlags flags() const override { return LobeFlags::DiffuseReflection; }
   bool isLossless() const override { return true; }
   bool isReciprocal() const override { return false; }  // f depends on wo alone
 

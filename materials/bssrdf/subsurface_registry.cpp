@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
+#include "materials/bsdf/dielectric_index_spec.h"
 #include "materials/bssrdf/measured_media.h"
+#include "materials/bssrdf/subsurface_far_field_brdf.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/spec_validation.h"
 
@@ -44,6 +48,12 @@ void completeDependent(MaterialParameters& p, json& completed) {
     p.set("roughness", DefaultRoughness);
     completed["roughness"] = DefaultRoughness;
   }
+  // A rough boundary is the rough dielectric, with its index limit (dielectric_index_spec.h):
+  // refused here, when the material is read, not when a render builds the boundary.
+  if (rough && !RoughDielectricIndexRange.contains(p.number("eta")))
+    throwMaterialKeyError("eta", completed["eta"], "is outside what a rough boundary can refract through",
+                          "eta " + RoughDielectricIndexRange.describe() +
+                              " with \"boundary\": \"rough\" (or \"boundary\": \"smooth\")");
   if (!rough && p.has("roughness"))
     throwMaterialKeyError("roughness", completed["roughness"], "applies to a rough boundary only",
                           "\"roughness\" with \"boundary\": \"rough\"");
@@ -55,6 +65,34 @@ void completeDependent(MaterialParameters& p, json& completed) {
   if (!burley && p.has("burley_fit"))
     throwMaterialKeyError("burley_fit", completed["burley_fit"], "applies to the burley profile only",
                           "\"burley_fit\" with \"profile\": \"burley\"");
+}
+
+// Mean free paths from 1 nm to 1 km: beyond them a profile's values, which go as 1 / d^2 and
+// exp(-r / d), overflow or vanish in double precision (R(r) of infinity, NaN averages).
+constexpr double MinExtinction = 1e-6, MaxExtinction = 1e6;  // sigma_t = sigma_s + sigma_a, mm^-1
+
+// Refuses a (scaled) medium outside that range, naming the key that put it there: "scale"
+// when the description alone is inside it, else the coefficients the description gives.
+void checkLengthScale(const MaterialParameters& p, const ScatteringMedium& medium, double scale,
+                      const json& completed) {
+  for (int c = 0; c < 3; ++c) {
+    const double sigmaT = medium.sigmaS[c] + medium.sigmaA[c];
+    if (sigmaT >= MinExtinction && sigmaT <= MaxExtinction) continue;
+    const double unscaled = sigmaT / scale;
+    const bool scaleMovedIt = scale != 1.0 && unscaled >= MinExtinction && unscaled <= MaxExtinction;
+    const std::string key = scaleMovedIt       ? "scale"
+                            : p.has("sigma_s") ? (medium.sigmaA[c] > medium.sigmaS[c] ? "sigma_a" : "sigma_s")
+                            : p.has("mfp")     ? "mfp"
+                                               : "scale";
+    char value[64];
+    std::snprintf(value, sizeof value, "%g", sigmaT);
+    throwMaterialKeyError(
+        key, completed.value(key, json()),
+        std::string("gives an extinction sigma_s + sigma_a of ") + value + " mm^-1 in channel " + "rgb"[c] +
+            (scale != 1.0 ? " (after \"scale\")" : "") + ", where the profile's values overflow",
+        "sigma_s + sigma_a, times \"scale\", in [1e-6, 1e6] mm^-1 in every channel (mean free "
+        "paths from 1 nm to 1 km)");
+  }
 }
 
 // The medium the description gives, before the profile is built (scaled).
@@ -88,6 +126,7 @@ ScatteringMedium mediumOf(const MaterialParameters& p, ProfileModel model, const
   }
   medium.sigmaS *= scale;
   medium.sigmaA *= scale;
+  checkLengthScale(p, medium, scale, completed);
   return medium;
 }
 
@@ -102,10 +141,29 @@ SubsurfaceMaterial buildSubsurface(const MaterialParameters& p, const json& comp
   try {
     material.profile = makeProfile(material.model, material.medium, material.burleyFit);
   } catch (const std::invalid_argument& error) {
-    throwMaterialKeyError("burley_fit", completed.value("burley_fit", json()),
-                          std::string("cannot be used here (") + error.what() + ")",
-                          "\"searchlight\" or \"diffuse\" for a medium without absorption");
+    // The medium is what the user gave; burley_fit may be its default.
+    const std::string key = p.has("sigma_s") ? "sigma_a" : p.has("reflectance") ? "reflectance" : "medium";
+    throwMaterialKeyError(key, completed.value(key, json()),
+                          "cannot be described with \"burley_fit\": " +
+                              completed.value("burley_fit", json()).dump() + " (" + error.what() + ")",
+                          "a medium with absorption, or \"burley_fit\": \"searchlight\" or \"diffuse\" for "
+                          "one without");
   }
+  // Nothing that is accepted may render or print as NaN: the profile at its own scale.
+  bool finite = std::isfinite(material.profile->totalReflectance()[0]) &&
+                std::isfinite(material.profile->totalReflectance()[1]) &&
+                std::isfinite(material.profile->totalReflectance()[2]);
+  for (int c = 0; c < 3 && finite; ++c) {
+    const double mfp = 1.0 / (material.medium.sigmaS[c] + material.medium.sigmaA[c]);
+    for (const double r : {0.01 * mfp, mfp, 10.0 * mfp}) {
+      const Rgb value = material.profile->eval(r);
+      finite = finite && std::isfinite(value[0]) && std::isfinite(value[1]) && std::isfinite(value[2]);
+    }
+  }
+  if (!finite)
+    throwMaterialKeyError("profile", completed["profile"],
+                          "gives non-finite values for this medium (total reflectance or R(r))",
+                          "a medium the profile can describe: another \"profile\", or other coefficients");
   return material;
 }
 
@@ -153,7 +211,8 @@ MaterialModel subsurfaceMaterialModel() {
             .range = EtaRange,
             .description =
                 "index of refraction inside relative to outside; default: the medium's (1.3, Marble 1.5), "
-                "else 1.3"},
+                "else 1.3; a rough boundary needs it " +
+                RoughDielectricIndexRange.describe()},
            {.name = "g",
             .kind = ParameterKind::Number,
             .range = ValueRange{-1.0, 1.0, true, true},
@@ -202,6 +261,11 @@ SubsurfaceMaterial makeSubsurface(const json& material) {
     throwMaterialKeyError("type", validated.model->type, "is a BSDF model, not a subsurface material",
                           "\"subsurface\"");
   return buildSubsurface(validated.parameters, validated.completed);
+}
+
+std::unique_ptr<BsdfModel> makeFarFieldBsdf(const json& material) {
+  if (!isSubsurfaceMaterial(material)) return makeBsdf(material);
+  return std::make_unique<SubsurfaceFarFieldBrdf>(makeSubsurface(material).bssrdf());
 }
 
 }  // namespace scatterlab

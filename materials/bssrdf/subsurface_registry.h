@@ -5,6 +5,8 @@
 // (kind "subsurface"), and is built by makeSubsurface rather than makeBsdf.
 #pragma once
 
+#include <memory>
+
 #include <nlohmann/json.hpp>
 
 #include "materials/bssrdf/subsurface_material.h"
@@ -21,5 +23,11 @@ bool isSubsurfaceMaterial(const nlohmann::json& material);
 // Builds the subsurface material a description gives; throws MaterialError on any invalid
 // description, and for a BSDF description.
 SubsurfaceMaterial makeSubsurface(const nlohmann::json& material);
+
+// The BSDF of any registry material as seen from afar: a BSDF material's own BSDF (makeBsdf), a
+// subsurface material's BSSRDF integrated over the entry point (subsurface_far_field_brdf.h).
+// What `scatterlab eval` and the explorer evaluate; throws MaterialError on any invalid
+// description.
+std::unique_ptr<BsdfModel> makeFarFieldBsdf(const nlohmann::json& material);
 
 }  // namespace scatterlab

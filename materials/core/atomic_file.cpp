@@ -4,22 +4,18 @@
 #include <stdexcept>
 #include <string>
 
-#include <unistd.h>
+#include "materials/core/temporary_files.h"
 
 namespace scatterlab {
 
 void writeFileAtomically(const std::filesystem::path& path,
                          const std::function<void(const std::filesystem::path& temporary)>& write) {
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid());
-  try {
-    write(temporary);
-    std::filesystem::rename(temporary, path);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
+  std::filesystem::path name = path;
+  name += temporarySuffix();
+  TemporaryPath temporary(name);  // removed on an exception or an interruption
+  write(temporary.path());
+  std::filesystem::rename(temporary.path(), path);
+  temporary.keep();
 }
 
 void writeTextFileAtomically(const std::filesystem::path& path, std::string_view text) {

@@ -8,8 +8,10 @@
 
 namespace scatterlab {
 
-// Calls write(temporaryPath); on success renames it to `path`, on any exception removes it
-// and rethrows. The directory of `path` must exist.
+// Calls write(temporaryPath) with temporaryPath = PATH.tmp-PID; on success renames it to
+// `path`, on any exception (or an interruption, temporary_files.h) removes it and rethrows.
+// The directory of `path` must exist. Several files that belong together are staged and
+// committed together by the command line's StagedOutputs (app/staged_outputs.h).
 void writeFileAtomically(const std::filesystem::path& path,
                          const std::function<void(const std::filesystem::path& temporary)>& write);
 

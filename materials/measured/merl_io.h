@@ -62,13 +62,21 @@ class MerlTable {
 };
 
 // Throws MerlError naming `path` and the problem: not found, a directory, not readable,
-// truncated or oversized (the size is fixed), a header other than 90 x 90 x 180, a NaN or
-// infinite value (the first one's channel and cell, and how many).
+// truncated or oversized (the size is fixed; checked before reading), a header other than
+// 90 x 90 x 180, a NaN, infinite or absurdly large value (above 1e6 sr^-1; the first one's
+// channel and cell, and how many), or no valid cell (every cell missing or below the horizon).
 MerlTable readMerl(const std::filesystem::path& path);
+
+// readMerl's checks on a file's bytes, already in memory (`path` names it in messages).
+MerlTable parseMerl(std::span<const unsigned char> bytes, const std::filesystem::path& path);
+
+// The value checks alone: throws MerlError on a NaN, infinite or absurdly large value.
+// `stored` is channel-planar (3 x CellCount, or a part of it from the start).
+void checkMerlValues(std::span<const double> stored, const std::filesystem::path& path);
 
 // Writes atomically (temporary file, then rename): a failure leaves no file behind. Throws
 // MerlError if the directory does not exist or cannot be written, or if a value is not
-// finite (the reader would reject the file).
+// finite or too large (the reader would reject the file).
 void writeMerl(const std::filesystem::path& path, const MerlTable& table);
 
 }  // namespace scatterlab

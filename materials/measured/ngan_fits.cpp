@@ -6,7 +6,11 @@
 #include <charconv>
 #include <fstream>
 #include <optional>
+#include <sstream>
 
+#include "materials/core/bounded_file.h"
+#include "materials/core/parse_number.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
@@ -29,6 +33,15 @@ class LineParser {
   LineParser(std::string_view text, size_t column0) : text_(text), column0_(column0) {}
 
   Call call() {
+    // A published line nests two levels (Aggregate of lobes); the limit keeps a hostile line
+    // from exhausting the stack.
+    constexpr int MaxCallDepth = 8;
+    if (depth_ >= MaxCallDepth) fail("calls nested more than " + std::to_string(MaxCallDepth) + " deep");
+    ++depth_;
+    struct Leave {
+      int& depth;
+      ~Leave() { --depth; }
+    } leave{depth_};
     Call c{identifier(), json::object(), {}};
     expect('(');
     if (!peek(')')) {
@@ -86,7 +99,7 @@ class LineParser {
   double number() {
     skipSpace();
     double x = 0;
-    const auto [end, error] = std::from_chars(text_.data() + pos_, text_.data() + text_.size(), x);
+    const auto [end, error] = fromChars(text_.data() + pos_, text_.data() + text_.size(), x);
     if (error != std::errc() || !std::isfinite(x)) fail("expected a finite number");
     pos_ = size_t(end - text_.data());
     return x;
@@ -103,6 +116,7 @@ class LineParser {
   std::string_view text_;
   size_t column0_;  // columns of the line before text_
   size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 // Lobe models: the parameters a line must give, and the registry material they become.
@@ -225,13 +239,17 @@ PublishedFit parsePublishedFitLine(const std::string& line) {
 }
 
 std::vector<PublishedFit> readPublishedFits(const std::filesystem::path& file) {
-  const std::string source = "published-fits file \"" + file.string() + "\"";
-  std::error_code error;
-  const auto status = std::filesystem::status(file, error);
-  if (!std::filesystem::exists(status)) throw MaterialError(source + ": not found");
-  if (std::filesystem::is_directory(status)) throw MaterialError(source + ": is a directory, not a file");
-  std::ifstream in(file);
-  if (!in) throw MaterialError(source + ": not readable");
+  // Ngan et al.'s files are a few kB; the limit refuses a mistaken device or huge file before
+  // it is read (materials/core/bounded_file.h).
+  constexpr uintmax_t MaxFitFileBytes = uintmax_t(4) << 20;
+  const std::string source = "published-fits file " + inQuotes(file.string());
+  std::string text;
+  try {
+    text = readFileBounded(file, MaxFitFileBytes, "published-fits file");
+  } catch (const InputFileError& e) {
+    throw MaterialError(e.what());
+  }
+  std::istringstream in(text);
   std::vector<PublishedFit> fits;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -244,7 +262,6 @@ std::vector<PublishedFit> readPublishedFits(const std::filesystem::path& file) {
       throw MaterialError(source + ", line " + std::to_string(number) + ": " + e.what());
     }
   }
-  if (in.bad()) throw MaterialError(source + ": read error");
   return fits;
 }
 

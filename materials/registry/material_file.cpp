@@ -1,11 +1,12 @@
 #include "materials/registry/material_file.h"
 
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <sstream>
+#include <string_view>
 #include <vector>
 
+#include "materials/core/bounded_file.h"
+#include "materials/core/json_text.h"
+#include "materials/core/quoted.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/parameter_spec.h"
 
@@ -15,95 +16,34 @@ namespace {
 
 using nlohmann::json;
 
-// The key whose value the parser is reading, so that a parse error inside a value (NaN is
-// not JSON) can still name the key. A key at depth d starts; the event that completes a
-// value at depth d (a scalar, or the end of an array or object) ends it.
-class KeyTracker {
- public:
-  bool operator()(int depth, json::parse_event_t event, json& parsed) {
-    const auto level = static_cast<size_t>(depth);
-    switch (event) {
-      case json::parse_event_t::key:
-        keys_.resize(level > 0 ? level - 1 : 0);
-        keys_.push_back(parsed.get<std::string>());
-        break;
-      case json::parse_event_t::value:
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        if (level > 0 && keys_.size() == level) keys_.pop_back();
-        break;
-      default: break;
-    }
-    return true;
-  }
-  // "alpha", or "outer.inner" inside nested objects; empty outside any value.
-  std::string currentKey() const {
-    std::string out;
-    for (const std::string& key : keys_) out += (out.empty() ? "" : ".") + key;
-    return out;
-  }
-
- private:
-  std::vector<std::string> keys_;
-};
-
-// "line 1, column 22: syntax error while parsing value - ..." from nlohmann's what().
-std::string parseErrorDetail(const json::parse_error& error) {
-  std::string text = error.what();
-  if (const auto id = text.find("] "); text.starts_with("[json.exception.") && id != std::string::npos)
-    text.erase(0, id + 2);
-  constexpr std::string_view Prefix = "parse error at ";
-  if (text.starts_with(Prefix)) text.erase(0, Prefix.size());
-  return text;
-}
-
-json parseJsonText(const std::string& text, const std::string& source) {
-  KeyTracker tracker;
+// Parses a material's text with the limits every JSON input has (materials/core/json_text.h),
+// in the words of material errors.
+json parseMaterialText(std::string_view text, const std::string& source) {
   try {
-    return json::parse(text, std::ref(tracker));
-  } catch (const json::parse_error& error) {
-    const std::string detail = source + ", " + parseErrorDetail(error);
-    const std::string key = tracker.currentKey();
-    if (key.empty())
+    return parseJsonText(text, source);
+  } catch (const JsonTextError& error) {
+    const JsonTextProblem& problem = error.problem();
+    if (problem.kind == JsonTextProblem::Kind::NumberOverflow)
+      throw MaterialError("material key " + inQuotes(problem.key) + ": " + shortened(problem.detail) +
+                          " is too large for a double (" + source +
+                          "); allowed: a finite number, |x| < 1.8e308");
+    if (problem.kind != JsonTextProblem::Kind::Syntax) throw MaterialError(error.what());
+    const std::string detail = source + ", " + shortenLongValues(problem.detail);
+    if (problem.key.empty())
       throw MaterialError(detail + "; allowed: a JSON object such as {\"type\": \"lambertian\"}");
-    throw MaterialError("material key " + inQuotes(key) + ": not valid JSON (" + detail +
+    throw MaterialError("material key " + inQuotes(problem.key) + ": not valid JSON (" + detail +
                         "); allowed: a JSON value, numbers finite (NaN and Infinity are not JSON)");
   }
 }
 
 std::string readMaterialFile(const std::string& path) {
-  const std::string source = "material file " + inQuotes(path);
-  const std::string allowed = "; allowed: inline JSON starting with '{', or the path of a readable JSON file";
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status)) throw MaterialError(source + ": not found" + allowed);
-  if (std::filesystem::is_directory(status)) throw MaterialError(source + ": is a directory" + allowed);
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream contents;
-  if (file) contents << file.rdbuf();
-  if (!file.is_open() || file.bad()) throw MaterialError(source + ": not readable" + allowed);
-  return contents.str();
-}
-
-// Path parameters of every material object in `value` (nested ones too) made relative to
-// `directory` when they are relative paths.
-void resolveRelativePaths(json& value, const std::filesystem::path& directory) {
-  if (value.is_array()) {
-    for (json& element : value) resolveRelativePaths(element, directory);
-    return;
-  }
-  if (!value.is_object()) return;
-  const auto type = value.find("type");
-  const MaterialModel* model =
-      type != value.end() && type->is_string() ? findMaterialModel(type->get<std::string>()) : nullptr;
-  for (auto& [key, entry] : value.items()) {
-    const ParameterSpec* spec = model ? model->findParameter(key) : nullptr;
-    if (spec && spec->kind == ParameterKind::Path && entry.is_string() && !entry.get<std::string>().empty()) {
-      const std::filesystem::path path(entry.get<std::string>());
-      if (path.is_relative()) entry = (directory / path).lexically_normal().string();
-    } else {
-      resolveRelativePaths(entry, directory);
-    }
+  try {
+    return readFileBounded(path, MaxJsonFileBytes, "material file");
+  } catch (const InputFileError& error) {
+    throw MaterialError(
+        std::string(error.what()) +
+        "; allowed: inline JSON starting with '{', or the path of a readable JSON file of at most " +
+        describeBytes(MaxJsonFileBytes));
   }
 }
 
@@ -111,14 +51,51 @@ void resolveRelativePaths(json& value, const std::filesystem::path& directory) {
 
 bool isInlineMaterial(std::string_view argument) {
   const auto first = argument.find_first_not_of(" \t\r\n");
-  return first != std::string_view::npos && argument[first] == '{';
+  return first != std::string_view::npos && (argument[first] == '{' || argument[first] == '[');
 }
 
 nlohmann::json loadMaterialArgument(const std::string& argument) {
-  if (isInlineMaterial(argument)) return parseJsonText(argument, "inline JSON");
-  json material = parseJsonText(readMaterialFile(argument), "material file " + inQuotes(argument));
-  resolveRelativePaths(material, std::filesystem::path(argument).parent_path());
+  if (isInlineMaterial(argument)) {
+    json material = parseMaterialText(argument, "inline JSON");
+    if (material.is_array())
+      throw MaterialError("inline JSON: " + formatValue(material) +
+                          " is an array; allowed: one material per argument, a JSON object such as "
+                          "{\"type\": \"lambertian\"} (give several materials as several arguments)");
+    return material;
+  }
+  // A MERL table given as it is: the measured material that reads it.
+  if (argument.ends_with(".binary")) return json{{"type", "measured"}, {"file", argument}};
+  json material = parseMaterialText(readMaterialFile(argument), "material file " + inQuotes(argument));
+  const std::filesystem::path directory = std::filesystem::path(argument).parent_path();
+  forEachPathParameter(material, [&](json& entry) {
+    const std::filesystem::path path(entry.get<std::string>());
+    if (path.is_relative()) entry = (directory / path).lexically_normal().string();
+  });
   return material;
+}
+
+// Iterative: the depth is limited when the text is parsed, but the walk must not depend on that.
+void forEachPathParameter(json& root, const std::function<void(json& path)>& visit) {
+  std::vector<json*> stack{&root};
+  while (!stack.empty()) {
+    json& value = *stack.back();
+    stack.pop_back();
+    if (value.is_array()) {
+      for (json& element : value) stack.push_back(&element);
+      continue;
+    }
+    if (!value.is_object()) continue;
+    const auto type = value.find("type");
+    const MaterialModel* model =
+        type != value.end() && type->is_string() ? findMaterialModel(type->get<std::string>()) : nullptr;
+    for (auto& [key, entry] : value.items()) {
+      const ParameterSpec* spec = model ? model->findParameter(key) : nullptr;
+      if (spec && spec->kind == ParameterKind::Path && entry.is_string() && !entry.get<std::string>().empty())
+        visit(entry);
+      else
+        stack.push_back(&entry);
+    }
+  }
 }
 
 }  // namespace scatterlab

@@ -27,6 +27,20 @@ using CompleteDependentFunction = void (*)(MaterialParameters&, nlohmann::json& 
 // and their validation.
 enum class MaterialKind { Bsdf, Subsurface };
 
+// A model's BRDF value as a function of its numeric parameters, for the fitter when the model is
+// none of its own kernels (fitting/lobe_kernels.h): a plugin's templated kernel instantiated with
+// automatic derivatives by fitting/plugin_fit_kernel.h. The slots are the model's number (1),
+// rgb (3) and pair (2) parameters in the order of its spec.
+struct FitKernelFunction {
+  int slots = 0;
+  // value[c] = f_c(slots; wi, wo) without the cosine (the model's eval); when `gradient` is not
+  // null, also gradient[c * slots + i] = d value[c] / d slots[i].
+  void (*eval)(const double* slots, const Vec3d& wi, const Vec3d& wo, double value[3],
+               double* gradient) = nullptr;
+
+  explicit operator bool() const { return eval != nullptr; }
+};
+
 // One registry entry.
 struct MaterialModel {
   std::string type{};
@@ -46,6 +60,11 @@ struct MaterialModel {
   // `widerWhenLarger` is false for it.
   std::string lobeWidthParameter{};
   bool widerWhenLarger = true;
+  // Where the model comes from: empty for a built-in model, the library's path for a plugin's
+  // (materials/registry/plugin.h); makeBsdf then guards its calls (plugin_bsdf.h).
+  std::string plugin{};
+  // Optional, for plugin models: the fitter's kernel (without one it differentiates numerically).
+  FitKernelFunction fitKernel{};
 
   const ParameterSpec* findParameter(std::string_view name) const {
     const auto it = std::find_if(parameters.begin(), parameters.end(),

@@ -27,37 +27,52 @@ namespace scatterlab {
 
 using nlohmann::json;
 
-// The one explicit list of models. Each model's spec and build function live beside its code
-// (`MaterialModel conductorModel()` in materials/bsdf/conductor.cpp, declared in its header):
-// adding a model is its own file plus one line here. Parsing, validation and the catalog are
-// generic over the entries.
-std::span<const MaterialModel> materialModels() {
-  static const std::vector<MaterialModel> models{lambertianModel(),
-                                                 conductorModel(),
-                                                 smoothConductorModel(),
-                                                 dielectricModel(),
-                                                 thinDielectricModel(),
-                                                 roughDielectricModel(),
-                                                 roughPlasticModel(),
-                                                 blendModel(),
-                                                 orenNayarModel(),
-                                                 eonModel(),
-                                                 phongModel(),
-                                                 blinnPhongModel(),
-                                                 lafortuneModel(),
-                                                 wardModel(),
-                                                 nganWardModel(),
-                                                 ashikhminShirleyModel(),
-                                                 nganAshikhminShirleyModel(),
-                                                 nganCookTorranceModel(),
-                                                 disneyModel(),
-                                                 measuredModel(),
-                                                 subsurfaceMaterialModel()};
+namespace {
+
+// The one explicit list of built-in models. Each model's spec and build function live beside
+// its code (`MaterialModel conductorModel()` in materials/bsdf/conductor.cpp, declared in its
+// header): adding a model is its own file plus one line here. Parsing, validation and the
+// catalog are generic over the entries.
+std::deque<MaterialModel>& modelList() {
+  static std::deque<MaterialModel> models{lambertianModel(),
+                                          conductorModel(),
+                                          smoothConductorModel(),
+                                          dielectricModel(),
+                                          thinDielectricModel(),
+                                          roughDielectricModel(),
+                                          roughPlasticModel(),
+                                          blendModel(),
+                                          orenNayarModel(),
+                                          eonModel(),
+                                          phongModel(),
+                                          blinnPhongModel(),
+                                          lafortuneModel(),
+                                          wardModel(),
+                                          nganWardModel(),
+                                          ashikhminShirleyModel(),
+                                          nganAshikhminShirleyModel(),
+                                          nganCookTorranceModel(),
+                                          disneyModel(),
+                                          measuredModel(),
+                                          subsurfaceMaterialModel()};
   return models;
 }
 
+}  // namespace
+
+const std::deque<MaterialModel>& materialModels() { return modelList(); }
+
+void addMaterialModel(MaterialModel model) {
+  if (const MaterialModel* existing = findMaterialModel(model.type))
+    throw MaterialError(
+        "model type " + inQuotes(model.type) + " already exists (" +
+        (existing->plugin.empty() ? std::string("built in") : "from plugin " + existing->plugin) +
+        "); allowed: a type no other model has");
+  modelList().push_back(std::move(model));
+}
+
 const MaterialModel* findMaterialModel(std::string_view type) {
-  const auto models = materialModels();
+  const auto& models = materialModels();
   const auto it =
       std::find_if(models.begin(), models.end(), [&](const MaterialModel& m) { return m.type == type; });
   return it == models.end() ? nullptr : &*it;
@@ -92,6 +107,7 @@ nlohmann::json materialCatalogJson() {
                        {"citation", model.citation},
                        {"parameters", std::move(parameters)},
                        {"alternatives", model.alternatives}});
+    if (!model.plugin.empty()) catalog.back()["plugin"] = model.plugin;
   }
   return catalog;
 }

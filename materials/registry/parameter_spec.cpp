@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "materials/core/json_text.h"
+
 namespace scatterlab {
 
 using nlohmann::json;
@@ -19,33 +21,27 @@ std::string formatNumber(double x) {
   return buffer;
 }
 
-// json::dump writes NaN and infinities as null, which would hide the very value at fault.
+// json::dump writes NaN and infinities as null, which would hide the very value at fault; in
+// an array of numbers (an rgb, a pair) each one is written. At most MaxLength characters.
 std::string formatValue(const json& value) {
+  constexpr size_t MaxLength = 80;
   if (value.is_number_float() && !std::isfinite(value.get<double>()))
     return formatNumber(value.get<double>());
-  if (value.is_array()) {
-    std::string out = "[";
+  std::string text;
+  if (value.is_array() && jsonDepth(value) == 1) {
+    text = "[";
     // Appended piece by piece: "," + formatValue(...) trips GCC 12's -Wstringop-overflow once
-    // formatValue is not file-local (a false positive like the one inQuotes avoids).
-    for (size_t i = 0; i < value.size(); ++i) {
-      if (i) out += ',';
-      out += formatValue(value[i]);
+    // formatValue is not file-local (a false positive, GCC bug 105329).
+    for (size_t i = 0; i < value.size() && text.size() <= MaxLength; ++i) {
+      if (i) text += ',';
+      text += formatValue(value[i]);
     }
-    return out + "]";
+    text += "]";
+  } else {
+    text = value.dump(-1, ' ', false, json::error_handler_t::replace);
   }
-  constexpr size_t MaxLength = 80;
-  std::string text = value.dump();
   if (text.size() > MaxLength) text = text.substr(0, MaxLength - 3) + "...";
   return text;
-}
-
-std::string inQuotes(std::string_view text) {
-  // Appended piece by piece: "\"" + std::string(text) + "\"" trips GCC 12's -Wrestrict (a
-  // false positive, GCC bug 105329).
-  std::string out(1, '"');
-  out += text;
-  out += '"';
-  return out;
 }
 
 std::string quotedList(const std::vector<std::string>& items, std::string_view separator) {

@@ -142,6 +142,7 @@ std::string formatNumber(double x);
 // The value as JSON text, cut at 80 characters; NaN and infinities as such (json::dump writes
 // them as null, which would hide the very value at fault).
 std::string formatValue(const nlohmann::json& value);
+// The text in quotes, long values shortened (materials/core/quoted.h declares and defines it).
 std::string inQuotes(std::string_view text);
 // "a", "a" and "b", ... joined with `separator`, each quoted.
 std::string quotedList(const std::vector<std::string>& items, std::string_view separator = ", ");

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "materials/registry/model_list.h"
+#include "materials/registry/plugin_bsdf.h"
 
 namespace scatterlab {
 
@@ -178,7 +179,55 @@ bool isInUnchosenAlternative(const MaterialModel& model, size_t chosen, const st
   return false;
 }
 
+[[noreturn]] void throwSpecError(const MaterialModel& model, const std::string& problem,
+                                 const std::string& allowed) {
+  throw MaterialError("model " + inQuotes(model.type) + ": " + problem + "; allowed: " + allowed);
+}
+
 }  // namespace
+
+void checkModelSpec(const MaterialModel& model) {
+  if (model.type.empty() || model.type.find_first_of(" \t\n\"'{}[],:") != std::string::npos)
+    throwSpecError(model, "the type is not a plain name",
+                   "a non-empty name without spaces, quotes, brackets, commas or colons");
+  if (model.kind == MaterialKind::Bsdf && !model.build)
+    throwSpecError(model, "a BSDF model without a build function", "a build function");
+  std::vector<std::string> names;
+  for (const ParameterSpec& spec : model.parameters) {
+    const std::string parameter = "parameter " + inQuotes(spec.name);
+    if (spec.name.empty() || spec.name == "type")
+      throwSpecError(model, "a parameter is named " + inQuotes(spec.name),
+                     "a non-empty name other than \"type\"");
+    if (std::find(names.begin(), names.end(), spec.name) != names.end())
+      throwSpecError(model, parameter + " is listed twice", "distinct parameter names");
+    names.push_back(spec.name);
+    if (spec.kind == ParameterKind::Choice && spec.choices.empty())
+      throwSpecError(model, parameter + " is a choice without choices", "at least one choice");
+    // No default: required, in a set of alternatives, or derived by the build function (the
+    // subsurface model's eta from its medium). A plugin's model has a default for every
+    // parameter (checkPluginModel).
+    if (spec.defaultValue.is_null()) continue;
+    try {
+      parseValue(spec, spec.defaultValue);
+    } catch (const MaterialError& error) {
+      throwSpecError(model, parameter + ": its default is not a valid value (" + error.what() + ")",
+                     "a default the parameter accepts");
+    }
+  }
+  for (const auto& keys : model.alternatives)
+    for (const std::string& key : keys)
+      if (!model.findParameter(key))
+        throwSpecError(model, "the alternatives name " + inQuotes(key) + ", which is not a parameter",
+                       "parameters of the model: " + quotedList(names));
+  if (!model.lobeWidthParameter.empty()) {
+    const ParameterSpec* width = model.findParameter(model.lobeWidthParameter);
+    if (!width || (width->kind != ParameterKind::Number && width->kind != ParameterKind::Pair))
+      throwSpecError(model,
+                     "the lobe-width parameter " + inQuotes(model.lobeWidthParameter) +
+                         " is not a number or pair parameter of the model",
+                     "empty, or a number or pair parameter");
+  }
+}
 
 MaterialError nestedMaterialError(const MaterialError& error, const std::string& prefix) {
   const std::string message = error.what();
@@ -222,6 +271,7 @@ std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material) {
         "type", parsed.model->type, "is a subsurface material (a BSSRDF), not a BSDF",
         "a BSDF model here; subsurface materials go to `scatterlab check`, `scatterlab profile` and "
         "`scatterlab render`");
+  if (!parsed.model->plugin.empty()) return buildPluginBsdf(*parsed.model, parsed.parameters);
   return parsed.model->build(parsed.parameters);
 }
 

@@ -29,6 +29,13 @@ struct ValidatedMaterial {
 // Throws MaterialError on any invalid description (any kind of model).
 ValidatedMaterial validateMaterial(const nlohmann::json& material);
 
+// Checks a model's spec as a whole, as the validation of its materials relies on it: a type and
+// parameter names that are present and distinct, every default a valid value of its parameter,
+// sets of alternatives whose keys are parameters, a lobe-width parameter that is a number or pair parameter,
+// a BSDF model with a build function. Throws MaterialError naming the model, the parameter and what is
+// allowed. Every built-in model passes; a plugin's models are checked before they are added.
+void checkModelSpec(const MaterialModel& model);
+
 // A MaterialError of a nested material, re-keyed under `prefix` ("materials[1]"): "material
 // key "alpha": ..." becomes "material key "materials[1].alpha": ...", and an error about the
 // nested material as a whole ("material: ...") names the prefix as its key.

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "fit_report.h"
 #include "materials/measured/merl_io.h"
 #include "materials/registry/spec_validation.h"
 
@@ -23,13 +25,6 @@ using namespace cli_runner;
 const std::string Truth = R"({"type":"blend","weight":0.5,"materials":[{"type":"lambertian","albedo":0.4},)"
                           R"({"type":"ngan-cook-torrance","albedo":0.4,"eta":0.3,"roughness":0.1}]})";
 const std::vector<std::string> Quick{"--samples", "20000", "--grid-points", "64", "--starts", "2"};
-
-double parameter(const json& report, const std::string& name) {
-  for (const json& p : report.at("fit").at("parameters"))
-    if (p.at("name") == name) return p.at("value").get<double>();
-  ADD_FAILURE() << "no parameter " << name;
-  return 0;
-}
 
 fs::path fitFile() { return fs::path(SCATTERLAB_DATA_DIR) / "published-fits" / "ngan_cooktorrance.fit"; }
 
@@ -72,8 +67,8 @@ TEST(FitCli, JsonReportHoldsTheParametersTheMaterialAndTheVerdict) {
   EXPECT_EQ(report.at("fit").at("metric"), "low-log");
   EXPECT_TRUE(report.at("fit").at("converged").get<bool>());
   // Noise-free data from the model itself: recovered (1e-4 as recovery_test.cpp).
-  EXPECT_NEAR(parameter(report, "ngan-cook-torrance.roughness"), 0.1, 1e-5);
-  EXPECT_NEAR(parameter(report, "lambertian.albedo.g"), 0.2, 2e-5);
+  EXPECT_NEAR(fittedParameter(report, "ngan-cook-torrance.roughness"), 0.1, 1e-5);
+  EXPECT_NEAR(fittedParameter(report, "lambertian.albedo.g"), 0.2, 2e-5);
   EXPECT_EQ(report.at("material").at("type"), "blend");
   EXPECT_TRUE(report.at("written").is_null());
   EXPECT_EQ(report.at("data").at("kind"), "material");
@@ -107,7 +102,7 @@ TEST(FitCli, FitsANoisyMerlFileWithMissingCells) {
   EXPECT_GT(report.at("data").at("missing_cells").get<size_t>(), 100000u);
   EXPECT_EQ(report.at("data").at("kind"), "merl");
   // 5% log-normal noise: the roughness within 1% of the line's 0.0367.
-  EXPECT_NEAR(parameter(report, "ngan-cook-torrance.roughness"), 0.0367, 0.01 * 0.0367);
+  EXPECT_NEAR(fittedParameter(report, "ngan-cook-torrance.roughness"), 0.0367, 0.01 * 0.0367);
   fs::remove(table);
 }
 
@@ -174,9 +169,12 @@ TEST(FitCli, BadInputNamesTheOptionFileOrValueAndWritesNothing) {
       {"absent.binary", "not found", "allowed"});
   expectBadInput({"fit", R"({"type":"lambertian","albedo":2})", "--model", "lambertian", "--metric", "ngan"},
                  {"albedo", "out of range"});
-  expectBadInput(
-      {"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out", (out / "sub" / "x.json").string()},
-      {"--out", "does not exist"});
+  // Missing parents are created (as everywhere); a file in their place is found before the fit.
+  const fs::path blocker = uniquePath("blocker");
+  std::ofstream(blocker) << "a file";
+  expectBadInput({"fit", Truth, "--model", "lambertian", "--metric", "ngan", "--out",
+                  (blocker / "sub" / "x.json").string()},
+                 {"--out", "cannot create the directory"});
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -3,6 +3,7 @@
 // The browser test (tests/report) looks at a whole report in Chromium.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -60,12 +61,20 @@ TEST(LabCli, ASecondReportReplacesTheFirstWhole) {
   const std::vector<std::string> lambertian{"lab", R"({"type": "lambertian"})", "--quick", "--out",
                                             out.string()};
   ASSERT_EQ(runScatterlab(lambertian).exitCode, 0);
-  std::ofstream(out / "left-over.txt") << "from before";
-  const ProcessResult run = runScatterlab(lambertian);
+  const json manifest = json::parse(readFile(out / "manifest.json"));
+  EXPECT_EQ(manifest["generator"], "scatterlab lab");
+  EXPECT_NE(std::find(manifest["files"].begin(), manifest["files"].end(), "lambertian/data.json"),
+            manifest["files"].end());
+  // A file the report did not write (not in its manifest) is never deleted with it.
+  std::ofstream(out / "notes.txt") << "mine";
+  expectBadInput(lambertian, {"--out", "cannot replace", "notes.txt"});
+  EXPECT_EQ(readFile(out / "notes.txt"), "mine");
+  fs::remove(out / "notes.txt");
+  const ProcessResult run = runScatterlab(lambertian + std::vector<std::string>{"--seed", "2"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   expectMentions(run.out, {"PASS  lambertian", "report: " + (out / "index.html").string()});
-  EXPECT_FALSE(fs::exists(out / "left-over.txt"));
   EXPECT_TRUE(fs::exists(out / "lambertian" / "data.json"));
+  EXPECT_NE(readFile(out / "report.json").find("--seed 2"), std::string::npos);
   // Progress is for terminals; the phase timings always go to stderr.
   expectMentions(run.err, {"lab: check", "lab: plots", "open " + (out / "index.html").string()});
 }
@@ -90,7 +99,7 @@ TEST(LabCli, BadInputLeavesTheOutputDirectoryAlone) {
 
   fs::create_directories(out);
   std::ofstream(out / "thesis.tex") << "years of work";
-  expectBadInput({"lab", R"({"type": "lambertian"})", "--out", out.string()}, {"--out", "other files"});
+  expectBadInput({"lab", R"({"type": "lambertian"})", "--out", out.string()}, {"--out", "cannot replace"});
   EXPECT_EQ(readFile(out / "thesis.tex"), "years of work");
 
   const fs::path file = out / "thesis.tex";

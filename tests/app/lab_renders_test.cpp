@@ -9,12 +9,15 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
 #include "app/lab/renders_section.h"
 #include "integrator/material_scene.h"
+#include "materials/bsdf/lambertian.h"
 #include "materials/registry/spec_validation.h"
 
 #include "cli_runner.h"
@@ -112,6 +115,57 @@ TEST(LabRenders, ADescriptionOfAnyTypeIsRenderedWhenTheRendererAcceptsIt) {
     EXPECT_NEAR(channel.get<double>(), 0.5, 1e-6);
   EXPECT_TRUE(fs::exists(dir / "render_furnace_material.png"));
   EXPECT_TRUE(fs::exists(dir / "render_furnace_material.exr"));
+}
+
+// A Lambertian whose sampled weights are not finite: every sample of the sphere is dropped.
+class NonFiniteLambertian final : public BsdfModel {
+ public:
+  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
+    return lambert_.eval(wi, wo, mode);
+  }
+  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
+    return lambert_.pdf(wi, wo, mode);
+  }
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode mode) const override {
+    std::optional<BsdfSample> s = lambert_.sample(wi, uLobe, u, mode);
+    if (s) s->weight = Rgb(std::numeric_limits<double>::quiet_NaN());
+    return s;
+  }
+  LobeFlags flags() const override { return lambert_.flags(); }
+
+ private:
+  LambertianBsdf lambert_{Rgb(0.5)};
+};
+
+// Samples the film drops are counted per render and shown in a red box; the images hold none.
+TEST(LabRenders, DroppedSamplesAreCountedAndShownInARedBox) {
+  const fs::path dir = freshDir("lab-renders-dropped");
+  const SphereSceneFactory broken = [](const json&, const Environment& environment, int size) {
+    return makePresetScene(ScenePreset::MaterialSphere, std::make_unique<NonFiniteLambertian>(), environment,
+                           size, size);
+  };
+  const LabSettings settings = tinyRenders();
+  const ReportSection section =
+      rendersSection(lambertian(0.5), nullptr, settings, furnace(), dir, {}, broken);
+  ASSERT_EQ(section.data["renders"].size(), 1u);
+  const json& render = section.data["renders"][0];
+  const uint64_t dropped = render["dropped_samples"].get<uint64_t>();
+  // Every sample that meets the sphere: at least all of its inner pixels' (the silhouette's
+  // pixels are partly background), none of the background's.
+  EXPECT_GE(dropped, render["sphere_pixels"].get<uint64_t>() * uint64_t(settings.renderSpp));
+  EXPECT_LT(dropped, render["samples"].get<uint64_t>());
+  EXPECT_EQ(render["non_finite_samples"].get<uint64_t>(), dropped);
+  EXPECT_EQ(section.data["dropped_samples"].get<uint64_t>(), dropped);
+  cli_runner::expectMentions(
+      section.html,
+      {"class=\"failures\"", "Samples dropped",
+       std::to_string(dropped) + " of " + std::to_string(render["samples"].get<uint64_t>()) + " samples"});
+  // The control: the same section of a sound material has no box.
+  const ReportSection sound = rendersSection(lambertian(0.5), nullptr, settings, furnace(),
+                                             freshDir("lab-renders-sound"), {}, acceptEverything);
+  EXPECT_EQ(sound.data["dropped_samples"].get<uint64_t>(), 0u);
+  EXPECT_EQ(sound.html.find("Samples dropped"), std::string::npos);
 }
 
 // The integrator's material sphere refuses what makeBsdf refuses, with the registry's message.

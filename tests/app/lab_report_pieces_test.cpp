@@ -70,6 +70,29 @@ TEST(Chart, KeepsBandsAndAxisLimits) {
   EXPECT_EQ(j["series"][0]["band"]["upper"], json::parse("[[1.0, 1.1]]"));
 }
 
+// A fit that falls to 1e-247 where the data ends must not set the log axis: the axis spans
+// the data (1e-3 .. 10, widened by LogAxisMargin), and the curve is kept, to be clipped.
+TEST(Chart, LogAxisSpansTheDataNotAModelCurveBelowIt) {
+  Chart chart;
+  chart.id = "fit";
+  chart.logY = true;
+  chart.series.push_back({"data", "#000000", SeriesStyle::Points, {{0, 1e-3}, {1, 10}, {2, 0.5}}, {}, {}});
+  chart.series.push_back(
+      {"fit", "#ff0000", SeriesStyle::Line, {{0, 2e-3}, {1, 8}, {2, 1e-247}}, {}, {}, /*setsRange=*/false});
+  const json j = chart.toJson();
+  EXPECT_DOUBLE_EQ(j["y_min"].get<double>(), 1e-3 / LogAxisMargin);
+  EXPECT_DOUBLE_EQ(j["y_max"].get<double>(), 10 * LogAxisMargin);
+  EXPECT_TRUE(j["x_min"].is_null());  // a linear axis keeps Chart.js's own range
+  EXPECT_EQ(j["series"][1]["points"].size(), 3u);
+  // An explicit limit wins over the data's.
+  chart.yMin = 1e-6;
+  EXPECT_DOUBLE_EQ(chart.toJson()["y_min"].get<double>(), 1e-6);
+  // The negative control: were the fit allowed to set the range, the axis would reach 1e-247.
+  chart.yMin.reset();
+  chart.series[1].setsRange = true;
+  EXPECT_LT(chart.toJson()["y_min"].get<double>(), 1e-246);
+}
+
 TEST(EmbeddedAssets, HoldChartJsItsLicenceAndTheReportFiles) {
   const std::string_view chart = embeddedAsset("report/chart.umd.min.js").text();
   EXPECT_NE(chart.find("Chart.js v" + std::string(chartJsVersion())), std::string_view::npos);

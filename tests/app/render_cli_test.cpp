@@ -3,6 +3,7 @@
 // the option or file and what is allowed, nothing written).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -114,6 +115,49 @@ TEST(RenderCli, MapAndPreviewSceneAndGaussianFilter) {
   expectMentions(run.out, {"copper-beckmann", "20x20", "wrote"});
   EXPECT_TRUE(fs::exists(prefix.string() + ".exr"));
   EXPECT_TRUE(fs::exists(prefix.string() + ".png"));
+}
+
+// A material whose samples are not finite or negative (the test hook of
+// integrator/fault_injection.h, half of every BSDF's samples): the film drops them, the images
+// hold no NaN and nothing below 0, and the command says how many and exits 1. Without the
+// fault the same render drops nothing and exits 0.
+TEST(RenderCli, DroppedSamplesAreCountedShownAndFailTheRender) {
+  const std::vector<std::string> render{
+      "render", R"({"type":"conductor","alpha":0.3})", "--res", "16x12", "--spp", "4", "--json"};
+  const fs::path clean = uniquePath("no-fault");
+  const ProcessResult good = runScatterlab(render + std::vector<std::string>{"--out", clean.string()});
+  ASSERT_EQ(good.exitCode, 0) << describe(good);
+  EXPECT_EQ(json::parse(good.out)["dropped_samples"], 0);
+  EXPECT_EQ(json::parse(good.out)["passed"], true);
+  for (const auto& [fault, key] : std::vector<std::pair<std::string, std::string>>{
+           {"non-finite", "non_finite_samples"}, {"negative", "negative_samples"}}) {
+    SCOPED_TRACE(fault);
+    const fs::path prefix = uniquePath("fault-" + fault);
+    const ProcessResult run = runScatterlab(render + std::vector<std::string>{"--out", prefix.string()},
+                                            {"SCATTERLAB_TEST_FAULT=" + fault});
+    ASSERT_EQ(run.exitCode, 1) << describe(run);
+    const json out = json::parse(run.out);
+    const json& r = out["renders"][0];
+    const uint64_t dropped = r["dropped_samples"].get<uint64_t>();
+    // About half of the sphere's samples (its BSDF samples with uLobe < 1/2), none of the
+    // background's; every one of them of the kind the fault makes.
+    EXPECT_GT(dropped, 16u);
+    EXPECT_LT(dropped, r["samples"].get<uint64_t>());
+    EXPECT_EQ(r[key].get<uint64_t>(), dropped);
+    EXPECT_EQ(out["dropped_samples"].get<uint64_t>(), dropped);
+    EXPECT_EQ(out["passed"], false);
+    expectMentions(run.err,
+                   {"render: ", std::to_string(dropped) + " of " +
+                                    std::to_string(r["samples"].get<uint64_t>()) + " samples dropped"});
+    const Image image = readExrRgb(prefix.string() + ".exr");
+    for (const float v : image.data()) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f) << v;
+    // The text output says it too.
+    const ProcessResult text = runScatterlab(std::vector<std::string>(render.begin(), render.end() - 1) +
+                                                 std::vector<std::string>{"--out", prefix.string()},
+                                             {"SCATTERLAB_TEST_FAULT=" + fault});
+    EXPECT_EQ(text.exitCode, 1) << describe(text);
+    expectMentions(text.out, {"FAILED: " + std::to_string(dropped) + " samples dropped"});
+  }
 }
 
 // Every estimator renders the caustic scene (glass on grey ground, the sphere light alone) to
@@ -281,9 +325,10 @@ TEST_F(RenderCliBadInput, Materials) {
                  prefix);
   expectBadInput({"render", "no-such-material.json", "--out", prefix.string()}, {"no-such-material.json"},
                  prefix);
-  // A subsurface material's rough boundary is a rough dielectric: eta 1 has no microfacet refraction.
+  // A subsurface material's rough boundary is a rough dielectric: eta 1 has no microfacet
+  // refraction, and the material is refused when it is read, naming the key.
   expectBadInput({"render", R"({"type":"subsurface","eta":1,"boundary":"rough"})", "--out", prefix.string()},
-                 {"boundary", "[1.02, 4]"}, prefix);
+                 {"\"eta\"", "[1.02, 4]", "rough boundary"}, prefix);
   expectBadInput(
       {"render", R"({"type":"subsurface","sigma_s":[1,1,1],"sigma_a":[-1,0,0]})", "--out", prefix.string()},
       {"sigma_a"}, prefix);
@@ -311,9 +356,12 @@ TEST_F(RenderCliBadInput, EnvironmentMaps) {
 }
 
 TEST_F(RenderCliBadInput, Outputs) {
-  const fs::path nowhere = uniquePath("no-such-dir") / "image";
-  expectBadInput({"render", WhiteLambertian, "--out", nowhere.string()}, {"--out", "does not exist"},
-                 nowhere);
+  // Missing parents are created (as everywhere); a file in their place is found before rendering.
+  const fs::path blocker = uniquePath("blocker");
+  std::ofstream(blocker) << "a file";
+  const fs::path nowhere = blocker / "sub" / "image";
+  expectBadInput({"render", WhiteLambertian, "--out", nowhere.string()},
+                 {"--out", "cannot create the directory"}, nowhere);
   // PREFIX.exr occupied by a directory: rejected before rendering.
   const fs::path occupied = uniquePath("occupied");
   fs::create_directories(occupied.string() + ".exr");

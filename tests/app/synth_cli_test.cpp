@@ -117,8 +117,11 @@ TEST(SynthCli, BadInputWritesNothing) {
                  {"absent.fit", "not found"});
   expectBadInput({"synth", R"({"type": "lambertian", "albedo": 2})", "--out", o}, {"albedo", "out of range"});
   expectBadInput({"synth", R"({"type": "lambertian"})"}, {"--out", "missing"});
-  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", (out / "sub" / "x.binary").string()},
-                 {"--out", "does not exist"});
+  // Missing parents are created (as everywhere); a file in their place is found before the work.
+  const fs::path blocker = uniquePath("blocker");
+  std::ofstream(blocker) << "a file";
+  expectBadInput({"synth", R"({"type": "lambertian"})", "--out", (blocker / "sub" / "x.binary").string()},
+                 {"--out", "cannot create the directory"});
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", testOutputDir().string()},
                  {"is a directory"});
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--log-noise", "-1"},

@@ -72,6 +72,32 @@ TEST(BurleyShapeFit, HeldAtPowerAHighAlbedoWantsAWiderProfile) {
   EXPECT_LT(fit.power, fit.albedo - 5.0 * fit.powerStdError);
 }
 
+// The negative control of the shape-factor CLI test's P < A: a "walk" whose profile is
+// Burley's own shape at power A (no diffusive tail), with the standard errors a walk of as many
+// paths would have. Its fitted P is A: the assertion P < A - 5 standard errors fails for it,
+// where the real walk at the same A passes.
+TEST(BurleyShapeFit, WithoutTheWalksTailThePowerIsA) {
+  constexpr double Albedo = 0.8;
+  constexpr uint64_t Paths = 30000;
+  HalfSpaceWalkResult burley;
+  burley.settings = burleyShapeWalkSettings(Albedo, Paths, 1);
+  const std::vector<double>& edges = burley.settings.radiusEdges;
+  const double d = 1.0 / burleyShapeFactor(BurleyFit::Searchlight, Albedo);
+  for (size_t k = 0; k + 1 < edges.size(); ++k) {
+    const double p = burleyCumulative(Albedo, d, edges[k + 1]) - burleyCumulative(Albedo, d, edges[k]);
+    const double area = Pi * (sqr(edges[k + 1]) - sqr(edges[k]));
+    burley.profile.push_back(p / area);
+    burley.profileStdError.push_back(std::sqrt(p * (1 - p) / double(Paths)) / area);
+  }
+  burley.totalReflectance = burleyCumulative(Albedo, d, edges.back());
+  burley.totalStdError = std::sqrt(burley.totalReflectance * (1 - burley.totalReflectance) / double(Paths));
+  const BurleyShapeFit control = fitBurleyShapeFactor(burley, Albedo);
+  EXPECT_NEAR(control.power, Albedo, 1e-6);
+  EXPECT_FALSE(control.power < Albedo - 5.0 * control.powerStdError);
+  const BurleyShapeFit walk = fitAt(Albedo, Paths, 4);
+  EXPECT_LT(walk.power, Albedo - 5.0 * walk.powerStdError);
+}
+
 // The negative control of the reproduction: the common confusion of the surface albedo A with
 // the single-scattering albedo c (a walk with c = A = 0.5 reflects only 0.14) gives a profile
 // far narrower than the published s(0.5) = 1.54, beyond the 8% the reproduction allows.

@@ -93,14 +93,20 @@ void expectCalibrated(Metric metric, double sigma0) {
       toString(metric).c_str(), Seeds, c.mahalanobis, dof, dof, 100 * rate1, 100 * rate2);
 }
 
-class NoiseCoverage : public ::testing::TestWithParam<Metric> {};
+struct MetricCase {
+  Metric metric;
+};
+void PrintTo(const MetricCase& c, std::ostream* os) { *os << toString(c.metric); }
+
+class NoiseCoverage : public ::testing::TestWithParam<MetricCase> {};
 
 TEST_P(NoiseCoverage, RecoveredParametersFallWithinTheErrorBarsAtTheExpectedRate) {
-  expectCalibrated(GetParam(), 0.02);
+  expectCalibrated(GetParam().metric, 0.02);
 }
 
-INSTANTIATE_TEST_SUITE_P(Grid, NoiseCoverage, ::testing::Values(Metric::L2, Metric::Ngan),
-                         [](const auto& info) { return toString(info.param); });
+INSTANTIATE_TEST_SUITE_P(Grid, NoiseCoverage,
+                         ::testing::Values(MetricCase{Metric::L2}, MetricCase{Metric::Ngan}),
+                         [](const auto& info) { return toString(info.param.metric); });
 
 }  // namespace
 }  // namespace scatterlab::fitting::test

@@ -5,6 +5,8 @@
 // wrong derivative, a wrong basin or a wrong sample geometry would give.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
@@ -232,7 +234,12 @@ TEST_P(PublishedRecovery, CookTorranceWardAndBlinnPhongLines) {
 
 INSTANTIATE_TEST_SUITE_P(Grid, PublishedRecovery,
                          ::testing::Values("alum-bronze", "gold-metallic-paint", "red-specular-plastic",
-                                           "nickel", "pink-felt"));
+                                           "nickel", "pink-felt"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace scatterlab::fitting::test

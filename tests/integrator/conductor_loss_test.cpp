@@ -57,6 +57,9 @@ double maskedAlbedoByQuadrature(const PinholeCamera& camera, const SilhouetteMas
 struct Resolution {
   int size, spp;
 };
+void PrintTo(const Resolution& c, std::ostream* os) {
+  *os << c.size << " x " << c.size << ", " << c.spp << " spp";
+}
 
 class ConductorLoss : public testing::TestWithParam<Resolution> {};
 

@@ -66,6 +66,7 @@ struct MaterialCase {
   std::string name;
   json material;
 };
+void PrintTo(const MaterialCase& c, std::ostream* os) { *os << c.name; }
 
 class EstimatorAgreement : public testing::TestWithParam<MaterialCase> {};
 

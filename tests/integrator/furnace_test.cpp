@@ -106,7 +106,7 @@ TEST_P(Furnace, EveryPixelIsOne) {
       3 * (32 * 32 - int(std::count(mask.regions.begin(), mask.regions.end(), PixelRegion::Background)));
   const double mean = sum / count, error = std::sqrt(variance) / count;
   EXPECT_NEAR(mean, 1.0, Sigmas * error + c.modelTolerance) << "standard error " << error;
-  EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);
+  EXPECT_EQ(result.statistics.droppedSamples(), 0u);
   std::cout << "[ furnace  ] " << c.name << ": mean " << mean << " +- " << error << "\n";
 }
 

@@ -56,7 +56,7 @@ Environment harshMap() {
 }
 
 void expectFinite(const RenderResult& result, const std::string& what) {
-  EXPECT_EQ(result.statistics.nonFiniteSamples, 0u) << what;
+  EXPECT_EQ(result.statistics.droppedSamples(), 0u) << what;
   // The view does show the surface: at least a third of the camera rays meet it.
   EXPECT_GT(result.statistics.vertices, result.statistics.samples / 3) << what;
   for (float v : result.color.data()) {

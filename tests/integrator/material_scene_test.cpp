@@ -29,8 +29,9 @@ TEST(MaterialScene, ASubsurfaceDescriptionBecomesASubsurfaceMaterial) {
   EXPECT_TRUE(material.subsurface.has_value());
 }
 
-// The rough boundary is a rough dielectric, whose range starts at eta 1.02 (registry): the
-// refusal names the key and the allowed range.
+// The rough boundary is a rough dielectric, whose range starts at eta 1.02
+// (RoughDielectricIndexRange): the material is refused when it is read, naming the key and the
+// allowed range.
 TEST(MaterialScene, ARoughBoundaryTooCloseToIndexMatchedIsRefusedWithItsRange) {
   const json material{{"type", "subsurface"}, {"boundary", "rough"}, {"eta", 1.01}};
   try {
@@ -38,8 +39,9 @@ TEST(MaterialScene, ARoughBoundaryTooCloseToIndexMatchedIsRefusedWithItsRange) {
     FAIL() << "accepted " << material.dump();
   } catch (const MaterialError& error) {
     const std::string message = error.what();
-    EXPECT_NE(message.find("\"boundary\""), std::string::npos) << message;
+    EXPECT_NE(message.find("\"eta\""), std::string::npos) << message;
     EXPECT_NE(message.find("[1.02, 4]"), std::string::npos) << message;
+    EXPECT_NE(message.find("rough boundary"), std::string::npos) << message;
   }
 }
 

@@ -53,7 +53,7 @@ TEST(SubsurfaceRender, RandomWalkFurnaceRendersOne) {
         {"type", "subsurface"}, {"sigma_s", {4.0, 4.0, 4.0}}, {"sigma_a", {0.0, 0.0, 0.0}}, {"eta", eta}};
     const Scene scene = subsurfaceSphere(material, SubsurfaceMode::RandomWalk, 16);
     const RenderResult result = render(scene, settingsWith(16, 5));
-    EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);
+    EXPECT_EQ(result.statistics.droppedSamples(), 0u);
     for (int y = 0; y < 16; ++y)
       for (int x = 0; x < 16; ++x)
         for (int c = 0; c < 3; ++c)
@@ -75,7 +75,7 @@ TEST(SubsurfaceRender, DiffusionFurnaceDeviationIsReported) {
                         {"eta", 1.3}};
     const Scene scene = subsurfaceSphere(material, SubsurfaceMode::Diffusion, 16);
     const RenderResult result = render(scene, settingsWith(256, 6));
-    EXPECT_EQ(result.statistics.nonFiniteSamples, 0u);
+    EXPECT_EQ(result.statistics.droppedSamples(), 0u);
     const SphereMean m = sphereMean(scene, result);
     std::printf("diffusion furnace, %-14s sphere mean %.4f +- %.4f (deviation from 1: %+.1f%%)\n", profile,
                 m.mean.x, std::sqrt(m.variance.x), 100.0 * (m.mean.x - 1.0));

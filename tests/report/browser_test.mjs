@@ -2,22 +2,17 @@
 // Debian's headless Chromium, driven by playwright-core (both installed by scripts/setup), and
 // checks that every image loaded, every chart was drawn by Chart.js with data on a canvas that
 // is not blank, that every material has its renders or the renderer's message in their place,
-// and that the page logged no console error and no request failed. Saves a
+// that every material links to the report's explorer, which opens with it selected, and that
+// the pages logged no console error and no request failed. Saves a
 // full-page screenshot beside the report (DIR/../report-screenshot.png, or SCREENSHOT).
 //
 // Usage: node browser_test.mjs REPORT_DIR [SCREENSHOT.png] [--expect-failed N] [--expect-unrendered N]
 // --expect-failed N: exactly N materials must be marked FAIL (default 0), each with its failing
 // rows listed. --expect-unrendered N: exactly N materials have no renders, each showing the
 // renderer's message instead (default 0). Exit 0 when every check passes; otherwise prints each failure and exits 1.
-import { createRequire } from 'node:module';
-import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
-import { pathToFileURL, fileURLToPath } from 'node:url';
-
-const here = path.dirname(fileURLToPath(import.meta.url));
-const require = createRequire(path.join(here, '..', '..', 'package.json'));
-const { chromium } = require('playwright-core');
+import { pathToFileURL } from 'node:url';
+import { withChromium, watchForErrors } from './chromium.mjs';
 
 const args = process.argv.slice(2);
 const takeCount = (flag) => {
@@ -36,20 +31,9 @@ const screenshot = path.resolve(screenshotArg || path.join(path.dirname(path.res
 const failures = [];
 const fail = (what) => failures.push(what);
 
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'scatterlab-chromium-'));
-const context = await chromium.launchPersistentContext(profile, {
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  viewport: { width: 1280, height: 900 },
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-         '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-});
-try {
+await withChromium(async (context) => {
   const page = await context.newPage();
-  page.on('console', (message) => { if (message.type() === 'error') fail('console error: ' + message.text()); });
-  page.on('pageerror', (error) => fail('page error: ' + error.message));
-  page.on('requestfailed', (request) => fail('request failed: ' + request.url() + ' (' + request.failure()?.errorText + ')'));
-  page.on('response', (response) => { if (response.status() >= 400) fail('HTTP ' + response.status() + ': ' + response.url()); });
+  watchForErrors(page, fail);
 
   await page.goto(pathToFileURL(index).href, { waitUntil: 'load' });
   // Closed <details> still load their images; open them so the screenshot shows everything a reader can.
@@ -126,13 +110,27 @@ try {
   if (unrendered !== expectedUnrendered)
     fail('expected ' + expectedUnrendered + ' materials without renders, the page has ' + unrendered);
 
+  // Every material links to the explorer preloaded with it; open each link and see it selected.
+  const links = await page.evaluate(() => Array.from(document.querySelectorAll('article.material')).map((a) => ({
+    id: a.id, href: a.querySelector('a.explorer-link') ? a.querySelector('a.explorer-link').href : null })));
   await page.screenshot({ path: screenshot, fullPage: true });
-  console.log(JSON.stringify({ index, screenshot, images: images.length, charts: charts.length, verdicts, renders,
+  for (const link of links) {
+    if (!link.href) { fail('material ' + link.id + ' has no explorer link'); continue; }
+    const explorer = await context.newPage();
+    watchForErrors(explorer, fail);
+    await explorer.goto(link.href, { waitUntil: 'load' });
+    await explorer.evaluate(() => window.scatterlab.ready);
+    await explorer.waitForFunction(() => window.scatterlabExplorer.shown.lobe !== null, null, { timeout: 60000 });
+    const selected = await explorer.evaluate(() => ({ id: window.scatterlabExplorer.state.entry.id,
+                                                      error: document.getElementById('error-box').hidden ? '' :
+                                                        document.getElementById('error-box').textContent }));
+    if (selected.id !== link.id || selected.error)
+      fail('the explorer link of ' + link.id + ' selected ' + selected.id + (selected.error ? ': ' + selected.error : ''));
+    await explorer.close();
+  }
+  console.log(JSON.stringify({ index, screenshot, images: images.length, charts: charts.length, verdicts, renders, explorerLinks: links.length,
                                points: charts.reduce((n, c) => n + (c.points || 0), 0) }));
-} finally {
-  await context.close();
-  fs.rmSync(profile, { recursive: true, force: true });
-}
+});
 if (failures.length > 0) {
   for (const failure of failures) console.error('FAIL ' + failure);
   process.exit(1);

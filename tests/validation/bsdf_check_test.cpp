@@ -1,9 +1,13 @@
 // The suite as `scatterlab check` runs it, on models whose answers are known.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "materials/bsdf/lambertian.h"
+#include "materials/bsdf/smooth_conductor.h"
 #include "tests/validation/test_models.h"
 #include "validation/bsdf_check.h"
+#include "validation/energy.h"
 
 namespace scatterlab {
 namespace {
@@ -24,8 +28,8 @@ TEST(BsdfCheck, WhiteLambertianPassesEverythingIncludingFurnace) {
   const CheckRow* furnace = r.find("furnace", 60);
   ASSERT_NE(furnace, nullptr);
   EXPECT_LT(furnace->statistic, 1e-5);  // quadrature of cos/pi over the hemisphere
-  // Rows: 5 or 6 checks per angle (furnace for lossless) + reciprocity.
-  EXPECT_EQ(r.rows.size(), 3u * 6u + 1u);
+  // Rows: 6 or 7 checks per angle (furnace for lossless) + reciprocity.
+  EXPECT_EQ(r.rows.size(), 3u * 7u + 1u);
 }
 
 TEST(BsdfCheck, ColouredLambertianAlbedoIsItsAlbedo) {
@@ -48,6 +52,62 @@ TEST(BsdfCheck, WrongWeightFailsConsistencyButNotChiSquare) {
   EXPECT_TRUE(r.find("chi2", 60)->passed);
   EXPECT_FALSE(r.find("consistency", 60)->passed);
   EXPECT_FALSE(r.find("albedo-mc", 60)->passed);  // sampled albedo 1% above quadrature
+}
+
+// Non-finite weights are counted, sample by sample: the "invalid values" row fails with their
+// number (about a quarter of the samples here), where a sound Lambertian's row reads 0.
+TEST(BsdfCheck, NonFiniteWeightsAreCountedAndFailTheirRow) {
+  BsdfCheckOptions o = quickOptions();
+  o.wiThetaDeg = {30};
+  const CheckRow* row = nullptr;
+  const CheckReport broken = runBsdfChecks(testing::NonFiniteWeightLambertian(0.25), "nan", o);
+  ASSERT_NE(row = broken.find("invalid values", 30), nullptr);
+  EXPECT_FALSE(row->passed);
+  EXPECT_NEAR(row->statistic, 0.25 * double(o.samples), 5.0 * std::sqrt(0.25 * 0.75 * double(o.samples)));
+  EXPECT_NE(row->note.find("not finite"), std::string::npos) << row->note;
+  const CheckReport sound = runBsdfChecks(LambertianBsdf(Rgb(0.5)), "sound", o);
+  ASSERT_NE(row = sound.find("invalid values", 30), nullptr);
+  EXPECT_TRUE(row->passed);
+  EXPECT_EQ(row->statistic, 0.0);
+}
+
+// The normalisation row holds the pdf to 1e-5 where the quadrature's own error estimate is
+// below that: a white Lambertian (cos / pi, which Simpson's rule integrates exactly) shows an
+// estimate below 1e-12, and a pdf 0.1% too large everywhere, which the old limit of 1e-3
+// let through, fails.
+TEST(BsdfCheck, NormalisationCatchesAPdfOffByOnePermille) {
+  BsdfCheckOptions o = quickOptions();
+  o.wiThetaDeg = {0, 60, 89.9};
+  const CheckReport sound = runBsdfChecks(LambertianBsdf(Rgb(0.5)), "sound", o);
+  const CheckReport broken = runBsdfChecks(testing::ScaledPdfLambertian(1.001), "pdf x 1.001", o);
+  for (const double wi : o.wiThetaDeg) {
+    const CheckRow* good = sound.find("normalisation", wi);
+    ASSERT_NE(good, nullptr);
+    EXPECT_TRUE(good->passed) << good->note;
+    EXPECT_DOUBLE_EQ(good->threshold, NormalisationTarget);
+    EXPECT_LT(good->statistic, 1e-12) << good->note;
+    EXPECT_NE(good->note.find("quadrature error estimate"), std::string::npos) << good->note;
+    const CheckRow* bad = broken.find("normalisation", wi);
+    ASSERT_NE(bad, nullptr);
+    EXPECT_FALSE(bad->passed) << bad->note;
+    EXPECT_NEAR(bad->statistic, 1e-3, 1e-9) << bad->note;
+    EXPECT_TRUE(broken.find("consistency", wi)->passed);  // sample() and pdf() agree: only the scale is off
+  }
+}
+
+// A delta lobe alone puts every sample into one cell: 0 degrees of freedom, so the chi-square
+// row gives no p-value, says so, and tests the count instead.
+TEST(BsdfCheck, ADeltaLobeAloneHasNoPValue) {
+  BsdfCheckOptions o = quickOptions();
+  o.wiThetaDeg = {30};
+  const CheckReport r = runBsdfChecks(SmoothConductorBsdf(Rgb(0.2), Rgb(3.9)), "mirror", o);
+  const CheckRow* chi = r.find("chi2", 30);
+  ASSERT_NE(chi, nullptr);
+  EXPECT_TRUE(chi->passed) << chi->note;
+  EXPECT_EQ(chi->dof, 0);
+  EXPECT_FALSE(chi->pValue.has_value());
+  EXPECT_NE(chi->note.find("no degrees of freedom"), std::string::npos) << chi->note;
+  EXPECT_NE(formatTable(r).find("no p-value"), std::string::npos);
 }
 
 TEST(BsdfCheck, ImagesAreWrittenOnRequest) {

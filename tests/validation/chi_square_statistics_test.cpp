@@ -1,6 +1,8 @@
 // The statistics behind the chi-square test, on hand-made tables with known answers.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "validation/chi_square.h"
 
 namespace scatterlab {
@@ -45,10 +47,38 @@ TEST(ChiSquareStatistics, PoolBelowMinimumMergesIntoNextCell) {
 }
 
 TEST(ChiSquareStatistics, SamplesWherePdfIsZeroRejectAtOnce) {
-  // 20 samples in a cell of expectation 0 with N = 1000: more than 1e-5 N.
+  // 20 samples in a cell of expectation 0.
   const ChiSquareResult r = chiSquareFromTables(row({20, 490, 490}), row({0, 500, 500}), 1000, 0.01);
   EXPECT_FALSE(r.passed);
   EXPECT_NE(r.failure.find("support"), std::string::npos) << r.failure;
+}
+
+// However few: 3 samples of 1e6 where the pdf integrates to 0 would once have been pooled
+// (below the old allowance of 1e-5 N = 10), into a pool whose expectation is 0, where no
+// statistic can score them.
+TEST(ChiSquareStatistics, EvenAFewSamplesWherePdfIsZeroReject) {
+  const ChiSquareResult r =
+      chiSquareFromTables(row({3, 0, 499997, 500000}), row({0, 0, 500000, 500000}), 1000000, 0.01);
+  EXPECT_FALSE(r.passed);
+  EXPECT_NE(r.failure.find("3 of 1000000 samples"), std::string::npos) << r.failure;
+  // The control: the same table without them passes.
+  EXPECT_TRUE(
+      chiSquareFromTables(row({0, 0, 500000, 500000}), row({0, 0, 500000, 500000}), 1000000, 0.01).passed);
+}
+
+// One scored cell: 0 degrees of freedom, so no p-value is made up; the count is tested
+// instead, |O - E| / sqrt(E) <= CountSigmas.
+TEST(ChiSquareStatistics, NoDegreesOfFreedomMeansNoPValue) {
+  // E = 10000 (sd 100): O = 10300 is 3 sd away, O = 10600 is 6.
+  const ChiSquareResult close = chiSquareFromTables(row({10300, 0}), row({10000, 0}), 10300, 0.01);
+  EXPECT_EQ(close.dof, 0);
+  EXPECT_FALSE(close.hasPValue());
+  EXPECT_TRUE(std::isnan(close.pValue));
+  EXPECT_DOUBLE_EQ(close.countZ, 3.0);
+  EXPECT_TRUE(close.passed);
+  const ChiSquareResult far = chiSquareFromTables(row({10600, 0}), row({10000, 0}), 10600, 0.01);
+  EXPECT_FALSE(far.passed);
+  EXPECT_NE(far.failure.find("no degrees of freedom"), std::string::npos) << far.failure;
 }
 
 TEST(ChiSquareStatistics, GrossMismatchIsRejected) {

@@ -3,7 +3,11 @@
 // the roughness mismatch, are in tests/materials/bsdf/conductor_kit_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "materials/bsdf/lambertian.h"
+#include "tests/test_names.h"
 #include "validation/bsdf_check.h"
 #include "validation/bsdf_sampling.h"
 #include "validation/negative_controls.h"
@@ -20,7 +24,25 @@ ChiSquareOptions options() {
   return o;
 }
 
-class LambertianControls : public ::testing::TestWithParam<std::tuple<NegativeControl, double>> {};
+struct ControlCase {
+  NegativeControl control;
+  double wiTheta;
+};
+std::string name(const ControlCase& c) {
+  // "pdf +5% on half the sphere" at 60 -> "pdf_5_on_half_the_sphere_wi60".
+  return test_names::readableTestName(toString(c.control)) + "_wi" + std::to_string(int(c.wiTheta));
+}
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << toString(c.control) << " at wi " << c.wiTheta; }
+
+std::vector<ControlCase> lambertianControls() {
+  std::vector<ControlCase> cases;
+  for (const NegativeControl control :
+       {NegativeControl::PdfHighOnHalf, NegativeControl::MissingJacobian, NegativeControl::SwappedDirections})
+    for (const double wiTheta : {0.0, 60.0, 89.0}) cases.push_back({control, wiTheta});
+  return cases;
+}
+
+class LambertianControls : public ::testing::TestWithParam<ControlCase> {};
 
 TEST_P(LambertianControls, AreRejected) {
   const auto [control, wiTheta] = GetParam();
@@ -32,11 +54,8 @@ TEST_P(LambertianControls, AreRejected) {
                          << r.dof << " p " << r.pValue;
 }
 
-INSTANTIATE_TEST_SUITE_P(Kit, LambertianControls,
-                         ::testing::Combine(::testing::Values(NegativeControl::PdfHighOnHalf,
-                                                              NegativeControl::MissingJacobian,
-                                                              NegativeControl::SwappedDirections),
-                                            ::testing::Values(0.0, 60.0, 89.0)));
+INSTANTIATE_TEST_SUITE_P(Kit, LambertianControls, ::testing::ValuesIn(lambertianControls()),
+                         [](const ::testing::TestParamInfo<ControlCase>& info) { return name(info.param); });
 
 TEST(NegativeControls, CorrectLambertianPassesWithTheSameSettings) {
   const LambertianBsdf model(Rgb(0.8));

@@ -2,6 +2,8 @@
 // production models do not cover (a delta lobe) or wrong in exactly one way.
 #pragma once
 
+#include <limits>
+
 #include "materials/bsdf/lambertian.h"
 
 namespace scatterlab::testing {
@@ -58,6 +60,50 @@ class WrongWeightLambertian final : public BsdfModel {
  private:
   double factor_;
   LambertianBsdf base_;
+};
+
+// A Lambertian whose sampled weights are not finite (NaN) for samples with uLobe < fraction.
+class NonFiniteWeightLambertian final : public BsdfModel {
+ public:
+  explicit NonFiniteWeightLambertian(double fraction) : fraction_(fraction) {}
+  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.eval(wi, wo); }
+  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.pdf(wi, wo); }
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
+    auto s = base_.sample(wi, uLobe, u);
+    if (s && uLobe < fraction_) s->weight = Rgb(std::numeric_limits<double>::quiet_NaN());
+    return s;
+  }
+  LobeFlags flags() const override { return base_.flags(); }
+
+ private:
+  double fraction_;
+  LambertianBsdf base_{Rgb(0.5)};
+};
+
+// A Lambertian whose density is `scale` times too large everywhere: sample() and pdf() agree
+// with each other, and the weight is eval |cos| / pdf of both, so only the normalisation of
+// the pdf (and what the albedo makes of it) is wrong.
+class ScaledPdfLambertian final : public BsdfModel {
+ public:
+  explicit ScaledPdfLambertian(double scale) : scale_(scale) {}
+  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.eval(wi, wo); }
+  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override {
+    return scale_ * base_.pdf(wi, wo);
+  }
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode) const override {
+    auto s = base_.sample(wi, uLobe, u);
+    if (!s) return s;
+    s->pdf *= scale_;
+    s->weight /= scale_;
+    return s;
+  }
+  LobeFlags flags() const override { return base_.flags(); }
+
+ private:
+  double scale_;
+  LambertianBsdf base_{Rgb(0.5)};
 };
 
 // Reflects on the whole upper hemisphere but samples only phi in (0, pi) with a doubled

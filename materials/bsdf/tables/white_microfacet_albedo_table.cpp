@@ -1,5 +1,5 @@
 // GENERATED FILE - do not edit. Regenerate with
-//   scatterlab generate-table white-microfacet-albedo --output materials/bsdf/tables/white_microfacet_albedo_table.cpp
+//   scatterlab generate-table white-microfacet-albedo --out materials/bsdf/tables/white_microfacet_albedo_table.cpp
 // E(mu, alpha): directional albedo of single-scattering GGX and Beckmann reflection with
 // Fresnel = 1 and Smith height-correlated masking-shadowing, at the nodes of WhiteAlbedoGrid
 // (materials/bsdf/white_microfacet_albedo.h): 32 rows uniform in sqrt(alpha) from alpha = 0.001 to 1,

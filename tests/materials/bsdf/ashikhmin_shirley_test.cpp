@@ -92,6 +92,7 @@ std::string name(const AsCase& c) {
   return std::string(c.ngan ? "Ngan" : "Paper") + "_" + catalog_suite::number(c.nu) + "x" +
          catalog_suite::number(c.nv) + "_rs" + catalog_suite::number(c.rs);
 }
+void PrintTo(const AsCase& c, std::ostream* os) { *os << name(c); }
 // Exponents from 0 (uniform half vectors) to 1e5; 800 x 1 is the anisotropy of alpha
 // 0.05 x 0.8 (n ~ 2 / alpha^2 - 2).
 std::vector<AsCase> grid() {
@@ -99,8 +100,8 @@ std::vector<AsCase> grid() {
           {false, 100000, 100000, 0.5, 0.5}, {false, 800, 1, 0.2, 0.8},  {true, 1, 1, 1.0, 0.0},
           {true, 78200, 78200, 0.999, 0.0}};
 }
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(grid().size() * catalog_suite::incidentAngles().size()));
+const catalog_suite::ChiSquareSuite Suite{"ashikhmin-shirley-kit",
+                                          int(grid().size() * catalog_suite::incidentAngles().size())};
 
 class AshikhminShirleyKit : public ::testing::TestWithParam<AsCase> {};
 
@@ -108,7 +109,7 @@ TEST_P(AshikhminShirleyKit, PassesEveryCheck) {
   const AsCase& c = GetParam();
   const auto model = c.ngan ? AshikhminShirleyBsdf::ngan(Rgb(1.0), c.rs, c.nu)
                             : AshikhminShirleyBsdf::paper(c.nu, c.nv, Rgb(c.rs), Rgb(c.rd));
-  catalog_suite::expectPasses(model, name(c), catalog_suite::options("ashikhmin-shirley-kit"));
+  catalog_suite::expectPasses(model, name(c), Suite.options());
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, AshikhminShirleyKit, ::testing::ValuesIn(grid()),
@@ -120,9 +121,10 @@ struct ControlCase {
   nlohmann::json material;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << c.name; }
 class AshikhminShirleyNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 TEST_P(AshikhminShirleyNegativeControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
+  catalog_suite::expectControlsRejected(Suite, GetParam().material, GetParam().wiTheta);
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, AshikhminShirleyNegativeControls,

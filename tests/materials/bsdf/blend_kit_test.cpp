@@ -19,6 +19,7 @@ struct BlendCase {
   json material;
   bool transmissive = false;  // the kit then also tests from below: twice the chi-square tests
 };
+void PrintTo(const BlendCase& c, std::ostream* os) { *os << c.name; }
 
 json blendOf(json weight, json first, json second) {
   return {
@@ -47,13 +48,14 @@ int gridChiSquareTests() {
   for (const BlendCase& c : grid()) count += int(GridAngles.size()) * (c.transmissive ? 2 : 1);
   return count;
 }
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(gridChiSquareTests());
+// The grid, and the smoke test below.
+const catalog_suite::ChiSquareSuite Suite{"blend-kit", gridChiSquareTests() + 1};
 
 class BlendKit : public ::testing::TestWithParam<BlendCase> {};
 
 TEST_P(BlendKit, PassesEveryCheck) {
   const auto model = makeBsdf(GetParam().material);
-  BsdfCheckOptions o = catalog_suite::options("blend-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = GridAngles;
   ASSERT_EQ(chiSquareTestCount(o, *model), int(GridAngles.size()) * (GetParam().transmissive ? 2 : 1));
   catalog_suite::expectPasses(*model, GetParam().name, o);
@@ -72,11 +74,10 @@ TEST(BlendKitSmoke, LosslessPairPassesTheFurnace) {
       makeBsdf(blendOf({0.3, 0.6, 0.9}, {{"type", "rough-plastic"}, {"alpha", 0.05}, {"diffuse", 1.0}},
                        {{"type", "lambertian"}, {"albedo", 1.0}}));
   ASSERT_TRUE(model->isLossless());
-  BsdfCheckOptions o = catalog_suite::options("blend-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {30};
   catalog_suite::expectPasses(*model, "smoke", o);
 }
-[[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
 // The kit must reject deliberately broken samplers of blends (docs/validation.md, "Negative controls"). A
 // blend has no single lobe width, so the roughness-mismatch control reports "not applicable".
@@ -85,9 +86,10 @@ struct ControlCase {
   json material;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << c.name; }
 class BlendNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 TEST_P(BlendNegativeControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
+  catalog_suite::expectControlsRejected(Suite, GetParam().material, GetParam().wiTheta);
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, BlendNegativeControls,

@@ -18,6 +18,7 @@
 #include "materials/registry/material_file.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/spec_validation.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -325,10 +326,7 @@ INSTANTIATE_TEST_SUITE_P(
             {"material key \"materials\"", "cannot be blended", "interior indices"},
             true}),
     [](const testing::TestParamInfo<NestedError>& info) {
-      std::string name = info.param.what;
-      for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-      return name;
+      return test_names::readableTestName(info.param.what);
     });
 
 TEST(BlendRegistry, TooDeepNestingIsAnErrorNotACrash) {

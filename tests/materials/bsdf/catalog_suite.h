@@ -1,18 +1,19 @@
-// The catalog's chi-square suite (docs/validation.md, "The Sidak correction"). Every kit test of a
-// correct sampler in materials_tests belongs to ONE suite with ONE Sidak correction: each
-// test file registers how many chi-square tests its grid runs (a namespace-scope
-// initialiser, so the total is known before any test starts), and every kit run uses the
-// significance alpha' = 1 - (1 - alpha)^(1/m) with m the whole catalog's count. Adding a model
-// therefore tightens every test a little instead of spending a fresh alpha per file.
+// The catalog's chi-square suites (docs/validation.md section 1). Each kit test file declares
+// its suite with the number of chi-square tests of correct samplers it runs, and every kit run
+// of the file uses the Sidak-corrected significance alpha' = 1 - (1 - alpha)^(1/m) with m that
+// count: the file's family of tests is false-rejected with probability alpha at most. The count
+// is written next to the grid it counts, and the kit tests assert it where the kit itself
+// could count differently (models with transmission are also checked from below).
 //
-// Also here: the suite's options, the negative-control assertion every model file uses, and
-// names for parameterised tests. Instantiations are named "Grid/..." (parameter grids) and
+// Also here: the negative-control assertion every model file uses, and names for
+// parameterised tests. Instantiations are named "Grid/..." (parameter grids) and
 // "Controls/..." (negative controls); CI runs both in the release build only (.ci/run).
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,45 +21,51 @@
 
 #include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
+#include "validation/chi_square.h"
 #include "validation/negative_controls.h"
 
 namespace scatterlab::catalog_suite {
-
-inline int& registeredChiSquareTests() {
-  static int count = 0;
-  return count;
-}
-
-// Adds `count` chi-square tests of correct samplers to the suite; returns it (so that a file
-// can keep it in a constant).
-inline int registerChiSquareTests(int count) {
-  registeredChiSquareTests() += count;
-  return count;
-}
-
-// m of the Sidak correction: every registered test of the binary.
-inline int chiSquareTests() { return registeredChiSquareTests(); }
 
 inline const std::vector<double>& incidentAngles() {
   static const std::vector<double> angles{0, 30, 60, 85, 89.9};
   return angles;
 }
 
-// The suite's options: 1e6 samples, 64 x 128 cells, the catalog-wide Sidak count, failure
-// images under the test output directory.
-inline BsdfCheckOptions options(const std::string& imageSubdir, uint64_t seed = 2024) {
-  BsdfCheckOptions o;
-  o.wiThetaDeg = incidentAngles();
-  o.samples = 1'000'000;
-  o.thetaBins = 64;
-  o.phiBins = 128;
-  o.seed = seed;
-  o.chiSquareTestCount = chiSquareTests();
-  o.reciprocityPairs = 20000;
-  o.imageDir = std::filesystem::path(SCATTERLAB_TEST_OUTPUT_DIR) / imageSubdir;
-  o.imagesOnFailureOnly = true;
-  return o;
-}
+// One family of chi-square tests of correct samplers: `name` (failure images go to a
+// directory of that name under the test output directory) and `testCount`, the m of its Sidak
+// correction at family-wise level alpha = 0.01.
+class ChiSquareSuite {
+ public:
+  ChiSquareSuite(std::string name, int testCount) : name_(std::move(name)), testCount_(testCount) {
+    if (testCount_ < 1) throw std::invalid_argument("a chi-square suite runs at least one test");
+  }
+  const std::string& name() const { return name_; }
+  int testCount() const { return testCount_; }
+  static constexpr double Alpha = 0.01;
+  // alpha' of each test of the suite.
+  double threshold() const { return sidakSignificance(Alpha, testCount_); }
+
+  // The kit's options for this suite: 1e6 samples, 64 x 128 cells, incidentAngles(), m =
+  // testCount(), failure images only on failure.
+  BsdfCheckOptions options(uint64_t seed = 2024) const {
+    BsdfCheckOptions o;
+    o.wiThetaDeg = incidentAngles();
+    o.samples = 1'000'000;
+    o.thetaBins = 64;
+    o.phiBins = 128;
+    o.seed = seed;
+    o.alpha = Alpha;
+    o.chiSquareTestCount = testCount_;
+    o.reciprocityPairs = 20000;
+    o.imageDir = std::filesystem::path(SCATTERLAB_TEST_OUTPUT_DIR) / name_;
+    o.imagesOnFailureOnly = true;
+    return o;
+  }
+
+ private:
+  std::string name_;
+  int testCount_;
+};
 
 // 0.05 -> "0p05", for test names.
 inline std::string number(double x) {
@@ -82,12 +89,14 @@ inline void expectPasses(const BsdfModel& model, const std::string& label, const
 // assertion can fail for every model. A model with transmission is checked from the angle's
 // own side only (above 90 degrees: from inside). `thetaBins` x `phiBins`: coarser cells hold
 // more samples each and lose no power against these errors, at a quarter of the quadrature.
-inline void expectControlsRejected(const nlohmann::json& material, double wiThetaDeg, int thetaBins = 64,
-                                   int phiBins = 128) {
+// The controls are tested at the significance of `suite`, the one a real error of the same
+// model would face.
+inline void expectControlsRejected(const ChiSquareSuite& suite, const nlohmann::json& material,
+                                   double wiThetaDeg, int thetaBins = 64, int phiBins = 128) {
   const auto model = makeBsdf(material);
   const auto mismatched = withMismatchedRoughness(material, 1.1);
   const auto sampler = mismatched ? makeBsdf(*mismatched) : nullptr;
-  BsdfCheckOptions o = options("controls");
+  BsdfCheckOptions o = suite.options();
   o.wiThetaDeg = {wiThetaDeg};
   o.transmissionFromBelow = false;
   o.thetaBins = thetaBins;

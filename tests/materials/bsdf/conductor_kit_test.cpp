@@ -23,6 +23,7 @@ std::string name(const ConductorCase& c) {
          (c.sampling == MicrofacetSampling::Visible ? "Visible" : "Classic") + "_" + alpha(c.alphaX) + "x" +
          alpha(c.alphaY);
 }
+void PrintTo(const ConductorCase& c, std::ostream* os) { *os << name(c); }
 
 std::vector<ConductorCase> grid() {
   std::vector<ConductorCase> cases;
@@ -38,11 +39,11 @@ const std::vector<double> IncidentAngles{0, 30, 60, 85, 89.9};
 const std::vector<double> OddGridAngles{0, 45, 80};
 constexpr int OddGridModels = 2;
 
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(
-    int(grid().size() * IncidentAngles.size() + OddGridModels * OddGridAngles.size()));
+const catalog_suite::ChiSquareSuite Suite{
+    "conductor-kit", int(grid().size() * IncidentAngles.size() + OddGridModels * OddGridAngles.size())};
 
 BsdfCheckOptions suiteOptions() {
-  BsdfCheckOptions o = catalog_suite::options("conductor-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = IncidentAngles;
   return o;
 }
@@ -85,6 +86,7 @@ struct ControlCase {
   ConductorCase conductor;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << name(c.conductor) << " at wi " << c.wiTheta; }
 
 class ConductorNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 

@@ -29,6 +29,7 @@ std::string name(const Case& c) {
          catalog_suite::number(c.alphaX) + "x" + catalog_suite::number(c.alphaY) +
          (c.white ? "_white" : "_gold");
 }
+void PrintTo(const Case& c, std::ostream* os) { *os << name(c); }
 
 std::unique_ptr<BsdfModel> make(const Case& c, double alphaScale = 1.0) {
   const MetalIor* gold = findMetal("Au");
@@ -62,12 +63,12 @@ int gridChiSquareTests() {
   return count;
 }
 
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(gridChiSquareTests());
+const catalog_suite::ChiSquareSuite Suite{"conductor-multiscatter-kit", gridChiSquareTests()};
 
 class ConductorMultiscatterKit : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ConductorMultiscatterKit, PassesEveryCheck) {
-  BsdfCheckOptions o = catalog_suite::options("conductor-multiscatter-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = GetParam().angles;
   const auto model = make(GetParam());
   ASSERT_EQ(model->isLossless(), GetParam().white);
@@ -83,6 +84,7 @@ struct ControlCase {
   Case conductor;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << name(c.conductor) << " at wi " << c.wiTheta; }
 
 class ConductorMultiscatterNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 
@@ -90,7 +92,8 @@ TEST_P(ConductorMultiscatterNegativeControls, AreAllRejected) {
   const ControlCase& c = GetParam();
   const auto model = make(c.conductor);
   const auto sampler = make(c.conductor, 1.1);  // alpha 10% larger in the sampler
-  BsdfCheckOptions o = catalog_suite::options("conductor-multiscatter-controls");
+  BsdfCheckOptions o = Suite.options();
+  o.imageDir.reset();
   o.wiThetaDeg = {c.wiTheta};
   const CheckReport report = runNegativeControls(*model, sampler.get(), name(c.conductor), o);
   ASSERT_EQ(report.rows.size(), allNegativeControls().size());

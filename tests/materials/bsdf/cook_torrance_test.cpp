@@ -63,17 +63,18 @@ struct CookTorranceCase {
 std::string name(const CookTorranceCase& c) {
   return "F0_" + catalog_suite::number(c.f0) + "_m" + catalog_suite::number(c.roughness);
 }
+void PrintTo(const CookTorranceCase& c, std::ostream* os) { *os << name(c); }
 std::vector<CookTorranceCase> grid() {
   return {{1.0, 0.001}, {0.05, 0.01}, {1.0, 0.1}, {0.5, 0.3}, {1.0, 1.0}};
 }
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(grid().size() * catalog_suite::incidentAngles().size()));
+const catalog_suite::ChiSquareSuite Suite{"cook-torrance-kit",
+                                          int(grid().size() * catalog_suite::incidentAngles().size())};
 
 class NganCookTorranceKit : public ::testing::TestWithParam<CookTorranceCase> {};
 
 TEST_P(NganCookTorranceKit, PassesEveryCheck) {
   const NganCookTorranceBsdf model(Rgb(KitAlbedo), GetParam().f0, GetParam().roughness);
-  catalog_suite::expectPasses(model, name(GetParam()), catalog_suite::options("cook-torrance-kit"));
+  catalog_suite::expectPasses(model, name(GetParam()), Suite.options());
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, NganCookTorranceKit, ::testing::ValuesIn(grid()),
@@ -87,9 +88,10 @@ struct ControlCase {
   nlohmann::json material;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << c.name; }
 class NganCookTorranceNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 TEST_P(NganCookTorranceNegativeControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
+  catalog_suite::expectControlsRejected(Suite, GetParam().material, GetParam().wiTheta);
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, NganCookTorranceNegativeControls,

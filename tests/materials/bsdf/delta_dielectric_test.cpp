@@ -258,11 +258,12 @@ std::string name(const KitCase& c) {
   return std::string(c.type == std::string("dielectric") ? "Smooth" : "Thin") + "_eta" +
          catalog_suite::number(c.eta);
 }
+void PrintTo(const KitCase& c, std::ostream* os) { *os << name(c); }
 
 // The kit cases, plus the two chi-square tests of MissingRadianceScale, whose directions and
 // probabilities are right.
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(KitCases.size() * 2 * KitAngles.size()) + 2);
+const catalog_suite::ChiSquareSuite Suite{"delta-dielectric-kit",
+                                          int(KitCases.size() * 2 * KitAngles.size()) + 2};
 
 class DeltaDielectricKit : public ::testing::TestWithParam<KitCase> {};
 
@@ -271,7 +272,7 @@ class DeltaDielectricKit : public ::testing::TestWithParam<KitCase> {};
 // 180 - theta.
 TEST_P(DeltaDielectricKit, PassesEveryCheckAndTheFurnaceFromBothSides) {
   const auto model = makeBsdf({{"type", GetParam().type}, {"eta", GetParam().eta}});
-  BsdfCheckOptions o = catalog_suite::options("delta-dielectric-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = KitAngles;
   // Two delta directions per angle: the test is of their two counts (dof 1), for which 2e5
   // samples resolve a probability to 1e-3; the cells only need to keep them apart.
@@ -340,7 +341,7 @@ class RadianceScaleMissing final : public BsdfModel {
 // probability exceeds 1, which is a hard failure.
 TEST(DeltaDielectricControls, ClaimedProbabilityOffIsRejectedByChiSquare) {
   const ClaimedProbabilityOff broken(1.5);
-  BsdfCheckOptions o = catalog_suite::options("controls");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {0, 150, 120};
   o.transmissionFromBelow = false;
   o.imageDir.reset();
@@ -354,7 +355,7 @@ TEST(DeltaDielectricControls, ClaimedProbabilityOffIsRejectedByChiSquare) {
 
 TEST(DeltaDielectricControls, MissingRadianceScaleIsCaughtByTheTransportModesRow) {
   const RadianceScaleMissing broken(1.5);
-  BsdfCheckOptions o = catalog_suite::options("controls");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {30};
   o.samples = 100000;
   o.imageDir.reset();
@@ -371,7 +372,7 @@ TEST(DeltaDielectricControls, GenericControlsAreReportedNotApplicable) {
   for (const char* type : {"dielectric", "thin-dielectric"}) {
     const json material{{"type", type}};
     const auto model = makeBsdf(material);
-    BsdfCheckOptions o = catalog_suite::options("controls");
+    BsdfCheckOptions o = Suite.options();
     o.wiThetaDeg = {45};
     o.samples = 100000;
     o.imageDir.reset();

@@ -29,6 +29,7 @@ struct DisneyCase {
   const char* name;
   json material;  // registry keys, type "disney" added
 };
+void PrintTo(const DisneyCase& c, std::ostream* os) { *os << c.name; }
 
 json disney(json parameters) {
   parameters["type"] = "disney";
@@ -62,14 +63,14 @@ const std::vector<DisneyCase>& grid() {
 // The white rough base of WhiteRoughBaseFailsOnlyTheAlbedoRow, at these incident angles.
 const std::vector<double> WhiteRoughAngles{0, 89.9};
 
-const int RegisteredTests = catalog_suite::registerChiSquareTests(
-    int(grid().size() * catalog_suite::incidentAngles().size() + WhiteRoughAngles.size()));
+const catalog_suite::ChiSquareSuite Suite{
+    "disney-kit", int(grid().size() * catalog_suite::incidentAngles().size() + WhiteRoughAngles.size())};
 
 class DisneyKit : public ::testing::TestWithParam<DisneyCase> {};
 
 TEST_P(DisneyKit, PassesEveryCheck) {
   const auto model = makeBsdf(disney(GetParam().material));
-  catalog_suite::expectPasses(*model, GetParam().name, catalog_suite::options("disney-kit"));
+  catalog_suite::expectPasses(*model, GetParam().name, Suite.options());
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, DisneyKit, ::testing::ValuesIn(grid()),
@@ -84,7 +85,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, DisneyKit, ::testing::ValuesIn(grid()),
 // neither hides it nor blames the sampler for it.
 TEST(DisneyKitEnergy, WhiteRoughBaseFailsOnlyTheAlbedoRow) {
   const auto model = makeBsdf(disney({{"baseColor", 1}, {"roughness", 1}}));
-  BsdfCheckOptions o = catalog_suite::options("disney-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = WhiteRoughAngles;
   o.imageDir.reset();  // the albedo row fails by design: no failure images
   const CheckReport report = runBsdfChecks(*model, "white rough", o);
@@ -111,9 +112,10 @@ struct ControlCase {
   json material;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << c.name; }
 class DisneyNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 TEST_P(DisneyNegativeControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected(disney(GetParam().material), GetParam().wiTheta);
+  catalog_suite::expectControlsRejected(Suite, disney(GetParam().material), GetParam().wiTheta);
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, DisneyNegativeControls,

@@ -236,6 +236,7 @@ std::string name(const KitCase& c) {
   return "rho" + catalog_suite::number(c.rho) + "_r" + catalog_suite::number(c.roughness) +
          (c.albedo == EonAlbedo::Fitted ? "_fitted" : "_analytic");
 }
+void PrintTo(const KitCase& c, std::ostream* os) { *os << name(c); }
 
 // Hard corners: full roughness at normal and grazing incidence (the backscattering peak and
 // the clipped LTC's extremes), white with the analytic albedo so the kit adds its furnace
@@ -256,13 +257,13 @@ int kitChiSquareTests() {
   return count;
 }
 
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(kitChiSquareTests());
+const catalog_suite::ChiSquareSuite Suite{"eon-kit", kitChiSquareTests()};
 
 class EonKit : public ::testing::TestWithParam<KitCase> {};
 
 TEST_P(EonKit, PassesEveryCheck) {
   const KitCase& c = GetParam();
-  BsdfCheckOptions o = catalog_suite::options("eon-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = c.angles;
   const EonBsdf model(Rgb(c.rho), c.roughness, c.albedo);
   catalog_suite::expectPasses(model, name(c), o);
@@ -278,7 +279,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, EonKit, ::testing::ValuesIn(kitGrid()),
 class EonNegativeControls : public ::testing::TestWithParam<double> {};
 
 TEST_P(EonNegativeControls, AreRejected) {
-  catalog_suite::expectControlsRejected({{"type", "eon"}, {"roughness", 0.7}}, GetParam());
+  catalog_suite::expectControlsRejected(Suite, {{"type", "eon"}, {"roughness", 0.7}}, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Controls, EonNegativeControls, ::testing::Values(60.0),

@@ -85,20 +85,20 @@ TEST(Gtr1, SamplerRoundTripsThroughItsInverse) {
   }
 }
 
-// Chi-square tests of correct samplers in the catalog's suite (catalog_suite.h).
+// Chi-square tests of the sampler, one suite (catalog_suite.h).
 struct SamplerCase {
   double alpha;
   int thetaBins, phiBins;
 };
 const std::vector<SamplerCase> SamplerCases{{0.001, 64, 128}, {0.1, 37, 83}, {1.0, 64, 128}};
-const int RegisteredTests = catalog_suite::registerChiSquareTests(int(SamplerCases.size()));
+const catalog_suite::ChiSquareSuite Suite{"gtr1", int(SamplerCases.size())};
 
 ChiSquareOptions chiSquareOptions(const SamplerCase& c) {
   ChiSquareOptions o;
   o.grid = {c.thetaBins, c.phiBins};
   o.sampleCount = 500000;
   o.seed = 11;
-  o.threshold = sidakSignificance(0.01, catalog_suite::chiSquareTests());
+  o.threshold = Suite.threshold();
   return o;
 }
 

@@ -183,6 +183,9 @@ struct FurnaceCase {
   MicrofacetType type;
   double ax, ay;
 };
+void PrintTo(const FurnaceCase& c, std::ostream* os) {
+  *os << (c.type == MicrofacetType::Ggx ? "GGX" : "Beckmann") << " alpha " << c.ax << " x " << c.ay;
+}
 
 class KullaContyFurnace : public ::testing::TestWithParam<FurnaceCase> {};
 

@@ -61,6 +61,7 @@ struct LafortuneCase {
   std::vector<LafortuneLobe> lobes;
   LafortuneNormalization normalization;
 };
+void PrintTo(const LafortuneCase& c, std::ostream* os) { *os << c.name; }
 
 std::vector<LafortuneCase> grid() {
   return {
@@ -79,14 +80,13 @@ std::vector<LafortuneCase> grid() {
 }
 
 const std::vector<double> KitAngles{0, 60, 89.9};
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(grid().size() * KitAngles.size()));
+const catalog_suite::ChiSquareSuite Suite{"lafortune-kit", int(grid().size() * KitAngles.size())};
 
 class LafortuneKit : public ::testing::TestWithParam<LafortuneCase> {};
 
 TEST_P(LafortuneKit, PassesEveryCheck) {
   const LafortuneCase& c = GetParam();
-  BsdfCheckOptions o = catalog_suite::options("lafortune-kit", 13);
+  BsdfCheckOptions o = Suite.options(13);
   o.wiThetaDeg = KitAngles;
   catalog_suite::expectPasses(LafortuneBsdf(c.kd, c.lobes, c.normalization), "lafortune-" + c.name, o);
 }
@@ -99,7 +99,8 @@ INSTANTIATE_TEST_SUITE_P(Grid, LafortuneKit, ::testing::ValuesIn(grid()),
                          });
 
 TEST(LafortuneControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected({{"type", "lafortune"},
+  catalog_suite::expectControlsRejected(Suite,
+                                        {{"type", "lafortune"},
                                          {"kd", 0.2},
                                          {"ks", 0.5},
                                          {"cx", -0.8},

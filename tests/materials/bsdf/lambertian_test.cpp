@@ -38,12 +38,10 @@ TEST(Lambertian, LosslessOnlyWhenWhite) {
   EXPECT_FALSE(LambertianBsdf(Rgb(1.0, 1.0, 0.99)).isLossless());
 }
 
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(catalog_suite::incidentAngles().size()));
+const catalog_suite::ChiSquareSuite Suite{"lambertian-kit", int(catalog_suite::incidentAngles().size())};
 
 TEST(Lambertian, PassesTheKitFromNormalToGrazing) {
-  catalog_suite::expectPasses(LambertianBsdf(Rgb(1.0)), "lambertian-white",
-                              catalog_suite::options("lambertian-kit"));
+  catalog_suite::expectPasses(LambertianBsdf(Rgb(1.0)), "lambertian-white", Suite.options());
 }
 
 TEST(Lambertian, TwoSidedWrapperFlipsBackfacingDirections) {

@@ -39,13 +39,12 @@ TEST(OrenNayar, EqualsTheAngleFormAndIsReciprocal) {
 // oblique and grazing incidence.
 const std::vector<double> KitSigmas{0.0, 0.35, PiOver2};
 const std::vector<double> KitAngles{0, 60, 89.9};
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(KitSigmas.size() * KitAngles.size()));
+const catalog_suite::ChiSquareSuite Suite{"oren-nayar-kit", int(KitSigmas.size() * KitAngles.size())};
 
 class OrenNayarKit : public ::testing::TestWithParam<double> {};
 
 TEST_P(OrenNayarKit, PassesEveryCheck) {
-  BsdfCheckOptions o = catalog_suite::options("oren-nayar-kit", 7);
+  BsdfCheckOptions o = Suite.options(7);
   o.wiThetaDeg = KitAngles;
   catalog_suite::expectPasses(OrenNayarBsdf(Rgb(1.0), GetParam()), "oren-nayar-" + std::to_string(GetParam()),
                               o);
@@ -59,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, OrenNayarKit, ::testing::ValuesIn(KitSigmas),
 // Cosine sampling does not depend on sigma, so the lobe-width control is a no-op here and
 // the kit must say so; the +5% control must be rejected.
 TEST(OrenNayarControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected({{"type", "oren-nayar"}, {"sigma", 0.5}}, 40.0);
+  catalog_suite::expectControlsRejected(Suite, {{"type", "oren-nayar"}, {"sigma", 0.5}}, 40.0);
 }
 
 }  // namespace

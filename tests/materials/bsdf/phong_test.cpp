@@ -72,19 +72,19 @@ std::string name(const PhongCase& c) {
   return std::string(c.blinn ? "BlinnPhong" : "Phong") + "_kd" + catalog_suite::number(c.kd) + "_ks" +
          catalog_suite::number(c.ks) + "_n" + catalog_suite::number(c.n);
 }
+void PrintTo(const PhongCase& c, std::ostream* os) { *os << name(c); }
 std::vector<PhongCase> grid() {
   return {{false, 0.2, 0.8, 10000.0}, {false, 0.5, 0.5, 0.0}, {false, 0.0, 1.0, 1.0}, {false, 0.3, 0.6, 50.0},
           {true, 0.1, 0.2, 100000.0}, {true, 0.0, 0.2, 10.0}, {true, 0.5, 0.1, 100.0}};
 }
 const std::vector<double> KitAngles{0, 60, 89.9};
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(grid().size() * KitAngles.size()));
+const catalog_suite::ChiSquareSuite Suite{"phong-kit", int(grid().size() * KitAngles.size())};
 
 class PhongKit : public ::testing::TestWithParam<PhongCase> {};
 
 TEST_P(PhongKit, PassesEveryCheck) {
   const PhongCase& c = GetParam();
-  BsdfCheckOptions o = catalog_suite::options("phong-kit", 11);
+  BsdfCheckOptions o = Suite.options(11);
   o.wiThetaDeg = KitAngles;
   if (c.blinn)
     catalog_suite::expectPasses(BlinnPhongBsdf(Rgb(c.kd), Rgb(c.ks), c.n), name(c), o);
@@ -96,12 +96,12 @@ INSTANTIATE_TEST_SUITE_P(Grid, PhongKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<PhongCase>& info) { return name(info.param); });
 
 TEST(PhongControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected({{"type", "phong"}, {"kd", 0.3}, {"ks", 0.6}, {"exponent", 40}},
-                                        30.0);
+  catalog_suite::expectControlsRejected(
+      Suite, {{"type", "phong"}, {"kd", 0.3}, {"ks", 0.6}, {"exponent", 40}}, 30.0);
 }
 TEST(BlinnPhongControls, AreAllRejected) {
   catalog_suite::expectControlsRejected(
-      {{"type", "blinn-phong"}, {"kd", 0.2}, {"ks", 0.2}, {"exponent", 200}}, 70.0);
+      Suite, {{"type", "blinn-phong"}, {"kd", 0.2}, {"ks", 0.2}, {"exponent", 200}}, 70.0);
 }
 
 }  // namespace

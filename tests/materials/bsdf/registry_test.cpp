@@ -12,6 +12,7 @@
 #include "materials/registry/material_file.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/spec_validation.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -250,10 +251,7 @@ INSTANTIATE_TEST_SUITE_P(
                     {"\"eta\"", "[0.2,0.4,1.4]", "needs \"k\"", "\"eta\" and \"k\" together"}},
         BadMaterial{"k without eta", {{"type", "conductor"}, {"k", 3.0}}, {"\"k\"", "3", "needs \"eta\""}}),
     [](const testing::TestParamInfo<BadMaterial>& info) {
-      std::string name = info.param.what;
-      for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-      return name;
+      return test_names::readableTestName(info.param.what);
     });
 
 // ---- Roughness scaling for the negative control -----------------------------------------

@@ -45,6 +45,9 @@ struct Case {
   MicrofacetType type;
   double alpha, theta;
 };
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << (c.type == MicrofacetType::Ggx ? "GGX" : "Beckmann") << " alpha " << c.alpha << " wi " << c.theta;
+}
 
 class RoughDielectricAlbedo : public ::testing::TestWithParam<Case> {};
 

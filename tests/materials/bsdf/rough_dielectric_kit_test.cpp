@@ -31,6 +31,7 @@ std::string name(const DielectricCase& c) {
   return std::string(c.distribution) + "_" + catalog_suite::number(c.alphaX) + "x" +
          catalog_suite::number(c.alphaY) + "_eta" + catalog_suite::number(c.eta);
 }
+void PrintTo(const DielectricCase& c, std::ostream* os) { *os << name(c); }
 
 json material(const DielectricCase& c) {
   return {{"type", "rough-dielectric"},
@@ -55,14 +56,13 @@ constexpr int AnglesPerCase = 7;
 
 constexpr size_t GridSamples = 250'000;
 
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(grid().size()) * AnglesPerCase);
+const catalog_suite::ChiSquareSuite Suite{"rough-dielectric-kit", int(grid().size()) * AnglesPerCase};
 
 class RoughDielectricKit : public ::testing::TestWithParam<DielectricCase> {};
 
 TEST_P(RoughDielectricKit, PassesEveryCheckFromBothSides) {
   const auto model = makeBsdf(material(GetParam()));
-  BsdfCheckOptions o = catalog_suite::options("rough-dielectric-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = IncidentAngles;
   o.samples = GridSamples;
   const bool odd = GetParam().alphaX != GetParam().alphaY;  // the anisotropic cases
@@ -85,6 +85,7 @@ struct ControlCase {
   DielectricCase dielectric;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << name(c.dielectric) << " at wi " << c.wiTheta; }
 
 class RoughDielectricNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 
@@ -93,7 +94,7 @@ TEST_P(RoughDielectricNegativeControls, AreAllRejected) {
   const json m = material(c.dielectric);
   const auto model = makeBsdf(m);
   const auto sampler = makeBsdf(*withMismatchedRoughness(m, 1.1));
-  BsdfCheckOptions o = catalog_suite::options("controls");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {c.wiTheta};
   o.transmissionFromBelow = false;  // the side is the case's
   o.thetaBins = 32;                 // coarser cells hold more samples each: no loss of power for these errors

@@ -47,6 +47,7 @@ std::string name(const Case& c) {
   return std::string(c.distribution) + "_" + catalog_suite::number(c.alpha) + "_eta" +
          catalog_suite::number(c.eta);
 }
+void PrintTo(const Case& c, std::ostream* os) { *os << name(c); }
 
 json material(const char* distribution, double alpha, double eta) {
   return {{"type", "rough-dielectric"},
@@ -95,7 +96,7 @@ int gridChiSquareTests() {
 
 constexpr size_t GridSamples = 250'000;
 
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(gridChiSquareTests());
+const catalog_suite::ChiSquareSuite Suite{"rough-dielectric-multiscatter-kit", gridChiSquareTests()};
 
 class RoughDielectricMultiscatterKit : public ::testing::TestWithParam<Case> {};
 
@@ -103,7 +104,7 @@ TEST_P(RoughDielectricMultiscatterKit, PassesEveryCheckFromBothSides) {
   const Case& c = GetParam();
   const auto model = makeBsdf(material(c.distribution, c.alpha, c.eta));
   ASSERT_TRUE(model->isLossless());
-  BsdfCheckOptions o = catalog_suite::options("rough-dielectric-multiscatter-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = c.angles;
   o.samples = GridSamples;
   o.thetaBins = c.oddCells ? 38 : 32;
@@ -123,12 +124,15 @@ struct ControlCase {
   const char* distribution;
   double alpha, eta, wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) {
+  *os << c.distribution << " alpha " << c.alpha << " eta " << c.eta << " at wi " << c.wiTheta;
+}
 
 class RoughDielectricMultiscatterControls : public ::testing::TestWithParam<ControlCase> {};
 
 TEST_P(RoughDielectricMultiscatterControls, AreRejected) {
   const ControlCase& c = GetParam();
-  catalog_suite::expectControlsRejected(material(c.distribution, c.alpha, c.eta), c.wiTheta, 32, 64);
+  catalog_suite::expectControlsRejected(Suite, material(c.distribution, c.alpha, c.eta), c.wiTheta, 32, 64);
 }
 
 INSTANTIATE_TEST_SUITE_P(Controls, RoughDielectricMultiscatterControls,

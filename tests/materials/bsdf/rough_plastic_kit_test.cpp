@@ -36,6 +36,7 @@ std::string name(const PlasticCase& c) {
   out += n(c.eta);
   return out;
 }
+void PrintTo(const PlasticCase& c, std::ostream* os) { *os << name(c); }
 
 // The corners, each once: alpha 0.001 and 1 of both distributions, a black and a white base
 // (white: lossless, so the furnace check runs) with both distributions, indices 1.1 to 2.4.
@@ -51,15 +52,15 @@ std::vector<PlasticCase> grid() {
 }
 const std::vector<double> GridAngles{0, 60, 89.9};
 
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(int(grid().size() * GridAngles.size()));
+// The grid, and the smoke test below.
+const catalog_suite::ChiSquareSuite Suite{"rough-plastic-kit", int(grid().size() * GridAngles.size()) + 1};
 
 class RoughPlasticKit : public ::testing::TestWithParam<PlasticCase> {};
 
 TEST_P(RoughPlasticKit, PassesEveryCheck) {
   const PlasticCase& c = GetParam();
   const auto model = makeRoughPlastic(c.type, c.alpha, c.kd, c.eta);
-  BsdfCheckOptions o = catalog_suite::options("rough-plastic-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = GridAngles;
   catalog_suite::expectPasses(*model, name(c), o);
 }
@@ -71,11 +72,10 @@ INSTANTIATE_TEST_SUITE_P(Grid, RoughPlasticKit, ::testing::ValuesIn(grid()),
 // model through the whole kit too: a coloured base under a high-index coating, at 85 degrees.
 TEST(RoughPlasticKitSmoke, ColouredGgxPassesAt85Degrees) {
   const auto model = makeRoughPlastic(MicrofacetType::Ggx, 0.3, Rgb(0.8, 0.2, 0.05), 2.4);
-  BsdfCheckOptions o = catalog_suite::options("rough-plastic-kit");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {85};
   catalog_suite::expectPasses(*model, "smoke", o);
 }
-[[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
 // The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls").
 struct ControlCase {
@@ -83,9 +83,10 @@ struct ControlCase {
   nlohmann::json material;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << c.name; }
 class RoughPlasticNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 TEST_P(RoughPlasticNegativeControls, AreAllRejected) {
-  catalog_suite::expectControlsRejected(GetParam().material, GetParam().wiTheta);
+  catalog_suite::expectControlsRejected(Suite, GetParam().material, GetParam().wiTheta);
 }
 INSTANTIATE_TEST_SUITE_P(
     Controls, RoughPlasticNegativeControls,

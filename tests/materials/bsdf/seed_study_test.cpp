@@ -17,6 +17,7 @@ struct StudyCase {
   nlohmann::json material;
   double wiTheta;
 };
+void PrintTo(const StudyCase& c, std::ostream* os) { *os << c.name; }
 
 class CatalogSeedStudy : public ::testing::TestWithParam<StudyCase> {};
 

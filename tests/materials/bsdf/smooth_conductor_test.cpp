@@ -106,14 +106,15 @@ TEST(SmoothConductor, RegistryBuildsFromAMetalOrFromEtaAndK) {
 
 // One-sided: the kit's angles from above only (no transmission, so none are added).
 const std::vector<double> KitAngles{0, 60, 89.9};
-[[maybe_unused]] const int RegisteredTests = catalog_suite::registerChiSquareTests(2 * int(KitAngles.size()));
+// Two materials at each angle.
+const catalog_suite::ChiSquareSuite Suite{"smooth-conductor-kit", 2 * int(KitAngles.size())};
 
 TEST(SmoothConductorKit, PassesEveryCheck) {
   for (const json& material :
        {json{{"type", "smooth-conductor"}, {"metal", "Cu"}},
         json{{"type", "smooth-conductor"}, {"eta", {0.2, 1.1, 3.0}}, {"k", {3.9, 2.0, 0.0}}}}) {
     const auto model = makeBsdf(material);
-    BsdfCheckOptions o = catalog_suite::options("smooth-conductor-kit");
+    BsdfCheckOptions o = Suite.options();
     o.wiThetaDeg = KitAngles;
     o.samples = 200'000;  // one delta direction: the test is its count
     o.thetaBins = 32;
@@ -126,7 +127,7 @@ TEST(SmoothConductorKit, PassesEveryCheck) {
 
 TEST(SmoothConductorKit, GenericControlsAreReportedNotApplicable) {
   const auto model = makeBsdf({{"type", "smooth-conductor"}});
-  BsdfCheckOptions o = catalog_suite::options("controls");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {30};
   o.samples = 100000;
   o.imageDir.reset();

@@ -122,6 +122,23 @@ TEST(HalfSpaceWalk, SingleScatteringMatchesItsClosedForm) {
   }
 }
 
+// A denormal extinction passes validation (positive, finite), but every free path is then
+// infinite and the position stops being finite: each path is counted as such, and none of them
+// is passed off as absorbed or escaped. With sigma_t = 1 none is.
+TEST(HalfSpaceWalk, PathsThatStopBeingFiniteAreCountedApart) {
+  HalfSpaceWalkSettings s = settings(0.8, 200, 9);
+  s.extinction = 1e-320;
+  s.radiusEdges = linearRadiusEdges(1.0, 4);
+  const HalfSpaceWalkResult walk = simulateHalfSpace(s);
+  EXPECT_EQ(walk.nonFinite, s.paths);
+  EXPECT_EQ(walk.escaped + walk.absorbed + walk.truncated, 0u);
+  EXPECT_EQ(walk.totalReflectance, 0.0);
+  s.extinction = 1.0;
+  const HalfSpaceWalkResult sound = simulateHalfSpace(s);
+  EXPECT_EQ(sound.nonFinite, 0u);
+  EXPECT_EQ(sound.escaped + sound.absorbed + sound.truncated, s.paths);
+}
+
 TEST(HalfSpaceWalk, RejectsSettingsOutOfRange) {
   HalfSpaceWalkSettings s;
   s.albedo = 1.2;

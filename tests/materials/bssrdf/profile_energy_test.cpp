@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "bssrdf_test_support.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -74,11 +75,8 @@ std::vector<ProfileCase> cases(std::vector<std::string> media, double g = 0.0) {
 }
 
 std::string caseName(const testing::TestParamInfo<ProfileCase>& info) {
-  std::string name =
-      toString(info.param.model) + "_" + info.param.medium + (info.param.g != 0 ? "_anisotropic" : "");
-  for (char& ch : name)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return name;
+  return test_names::readableTestName(toString(info.param.model) + "_" + info.param.medium +
+                                      (info.param.g != 0 ? "_anisotropic" : ""));
 }
 
 INSTANTIATE_TEST_SUITE_P(Profiles, ProfileEnergy, testing::ValuesIn(cases({"Skin1"})), caseName);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "bssrdf_test_support.h"
+#include "tests/test_names.h"
 #include "validation/subsurface_check.h"
 
 namespace scatterlab {
@@ -34,10 +35,7 @@ struct KitCase {
 void PrintTo(const KitCase& c, std::ostream* os) { *os << toString(c.model) << " " << c.medium; }
 
 std::string caseName(const testing::TestParamInfo<KitCase>& info) {
-  std::string name = toString(info.param.model) + "_" + info.param.medium;
-  for (char& ch : name)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return name;
+  return test_names::readableTestName(toString(info.param.model) + "_" + info.param.medium);
 }
 
 std::vector<KitCase> cases(std::vector<std::string> media) {

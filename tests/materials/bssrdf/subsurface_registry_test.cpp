@@ -3,6 +3,7 @@
 #include "bssrdf_test_support.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/registry/spec_validation.h"
+#include "tests/test_names.h"
 
 namespace scatterlab {
 namespace {
@@ -150,6 +151,12 @@ INSTANTIATE_TEST_SUITE_P(
                       {"\"profile\"", "\"quantized\"", "\"burley\"", "\"beam-diffusion\""}},
         BadSubsurface{"g of 1", {{"type", "subsurface"}, {"g", 1.0}}, {"\"g\"", "(-1, 1)"}},
         BadSubsurface{"zero scale", {{"type", "subsurface"}, {"scale", 0.0}}, {"\"scale\"", "> 0"}},
+        BadSubsurface{"rough boundary below the rough dielectric's eta",
+                      {{"type", "subsurface"}, {"boundary", "rough"}, {"eta", 1.01}},
+                      {"\"eta\"", "1.01", "[1.02, 4]", "rough boundary"}},
+        BadSubsurface{"rough boundary at eta 1 (index matched)",
+                      {{"type", "subsurface"}, {"boundary", "rough"}, {"eta", 1.0}},
+                      {"\"eta\"", "[1.02, 4]", "\"boundary\": \"smooth\""}},
         BadSubsurface{"roughness on a smooth boundary",
                       {{"type", "subsurface"}, {"roughness", 0.2}},
                       {"\"roughness\"", "0.2", "rough boundary only", "\"boundary\": \"rough\""}},
@@ -162,9 +169,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadSubsurface{"unknown key",
                       {{"type", "subsurface"}, {"albedo", 0.5}},
                       {"\"albedo\"", "\"reflectance\"", "\"mfp\""}},
-        BadSubsurface{"a BSDF",
-                      {{"type", "lambertian"}},
-                      {"\"type\"", "\"lambertian\"", "not a subsurface material"}}));
+        BadSubsurface{
+            "a BSDF", {{"type", "lambertian"}}, {"\"type\"", "\"lambertian\"", "not a subsurface material"}}),
+    [](const testing::TestParamInfo<BadSubsurface>& info) {
+      return test_names::readableTestName(info.param.what);
+    });
 
 TEST(SubsurfaceRegistry, MakeBsdfRefusesASubsurfaceMaterial) {
   try {

@@ -24,6 +24,7 @@ struct KitCase {
   std::string material;  // a line of ngan_cooktorrance.fit
   std::vector<double> angles;
 };
+void PrintTo(const KitCase& c, std::ostream* os) { *os << c.material; }
 
 const std::vector<KitCase>& kitCases() {
   static const std::vector<KitCase> cases{
@@ -102,6 +103,7 @@ struct ControlCase {
   std::string material;
   double wiTheta;
 };
+void PrintTo(const ControlCase& c, std::ostream* os) { *os << c.material << " at wi " << c.wiTheta; }
 
 class TabulatedNegativeControls : public ::testing::TestWithParam<ControlCase> {};
 

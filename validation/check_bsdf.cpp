@@ -1,0 +1,20 @@
+#include "validation/check_bsdf.h"
+
+#include <filesystem>
+
+namespace scatterlab {
+
+CheckReport checkBsdf(const BsdfModel& model, const CheckBsdfOptions& options) {
+  if (options.kit.imageDir) std::filesystem::create_directories(*options.kit.imageDir);
+  CheckReport report = runBsdfChecks(model, options.label, options.kit, options.progress);
+  if (options.negativeControls)
+    report.append(runNegativeControls(model, options.roughnessMismatchSampler, options.label, options.kit,
+                                      options.progress));
+  return report;
+}
+
+std::string formatVerdict(const CheckReport& report) {
+  return formatTable(report) + "verdict: " + (report.passed() ? "PASS" : "FAIL") + "\n";
+}
+
+}  // namespace scatterlab
