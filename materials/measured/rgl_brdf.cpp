@@ -348,7 +348,7 @@ std::vector<RglBrdf::TabulatedPair> RglBrdf::tabulatedPairs(size_t* belowHorizon
           const Vec3d h = sphericalDirection(std::sin(thetaH), std::cos(thetaH), phiH);
           const Vec3d wo = reflect(wi, h);
           if (glm::dot(wi, h) > 0 && wo.z > 0)
-            pairs.push_back({wi, wo, p * grids[1].size() + t});
+            pairs.push_back({wi, wo, p * grids[1].size() + t, r * N + c});
           else
             ++dropped;
         }

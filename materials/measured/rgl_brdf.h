@@ -69,6 +69,7 @@ class RglBrdf final : public BsdfModel {
   struct TabulatedPair {
     Vec3d wi, wo;
     size_t incident;  // index of the (phi_i, theta_i) node, phi_i major
+    size_t node;      // index of the colour-grid node, row major
   };
   std::vector<TabulatedPair> tabulatedPairs(size_t* belowHorizon = nullptr) const;
 
@@ -83,9 +84,11 @@ class RglBrdf final : public BsdfModel {
   double thetaMax() const { return thetaMax_; }
   size_t incidentAzimuths() const { return luminance_.parameterGrids()[0].size(); }
   size_t incidentElevations() const { return luminance_.parameterGrids()[1].size(); }
-  // The vndf and colour resolutions (rows x columns).
-  size_t vndfResolution() const { return vndf_.rows(); }
-  size_t colourResolution() const { return luminance_.rows(); }
+  // The grids of the vndf and of the colour tables: rows (azimuth) x columns (elevation).
+  size_t vndfRows() const { return vndf_.rows(); }
+  size_t vndfColumns() const { return vndf_.columns(); }
+  size_t colourRows() const { return luminance_.rows(); }
+  size_t colourColumns() const { return luminance_.columns(); }
 
  private:
   // wi and wo mirrored into the azimuth range the file covers (reduction 2 and 4).

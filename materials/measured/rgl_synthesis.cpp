@@ -22,16 +22,26 @@ std::vector<double> roundedToFloat32(std::vector<double> values) {
   return values;
 }
 
-// The positive bilinear functions the file stores as ndf and sigma (exact under interpolation).
-double syntheticNdf(const Vec2d& u) { return 0.5 + u.x + 0.25 * u.y; }
-double syntheticSigma(const Vec2d& u) { return 0.3 + 0.2 * u.x + 0.1 * u.y; }
+// A triangle wave over the azimuth's unit coordinate: 0 at phi = -pi and pi (periodic), 1 at
+// phi = 0; linear between, so bilinear interpolation reproduces it when u_phi = 0.5 is a row.
+double triangle(double uPhi) { return 1.0 - std::abs(2.0 * uPhi - 1.0); }
+
+// The positive functions the file stores as ndf and sigma: one value at the pole (u_theta =
+// 0), periodic in azimuth, and piecewise bilinear on the grid, so that interpolation
+// reproduces them everywhere. An isotropic file's sigma does not depend on wi's azimuth.
+double syntheticNdf(const Vec2d& u, bool) { return 0.5 + u.x * (1.0 + 0.5 * triangle(u.y)); }
+double syntheticSigma(const Vec2d& u, bool isotropic) {
+  return 0.3 + u.x * (0.2 + (isotropic ? 0.0 : 0.1 * triangle(u.y)));
+}
 
 // A function tabulated on a rows x columns grid of the unit square (x along columns), float32.
-std::vector<double> tabulate(size_t rows, size_t columns, double (*f)(const Vec2d&)) {
+std::vector<double> tabulate(size_t rows, size_t columns, bool isotropic, double (*f)(const Vec2d&, bool)) {
+  if (rows % 2 == 0) throw std::invalid_argument("the ndf and sigma grids need an odd number of rows");
   std::vector<double> values(rows * columns);
   for (size_t r = 0; r < rows; ++r)
     for (size_t c = 0; c < columns; ++c)
-      values[r * columns + c] = toFloat32(f({double(c) / double(columns - 1), double(r) / double(rows - 1)}));
+      values[r * columns + c] =
+          toFloat32(f({double(c) / double(columns - 1), double(r) / double(rows - 1)}, isotropic));
   return values;
 }
 
@@ -116,8 +126,8 @@ TensorFile synthesizeRglFile(const RglChannelValues& values, const RglSynthesisO
   file.set(TensorField::fromText("description", o.description));
   file.set(TensorField::fromValues("phi_i", TensorDtype::Float32, {P}, phiI));
   file.set(TensorField::fromValues("theta_i", TensorDtype::Float32, {T}, thetaI));
-  const std::vector<double> sigma = tabulate(o.ndfRows, o.ndfColumns, syntheticSigma);
-  const std::vector<double> ndf = tabulate(o.ndfRows, o.ndfColumns, syntheticNdf);
+  const std::vector<double> sigma = tabulate(o.ndfRows, o.ndfColumns, isotropic, syntheticSigma);
+  const std::vector<double> ndf = tabulate(o.ndfRows, o.ndfColumns, isotropic, syntheticNdf);
   file.set(TensorField::fromValues("sigma", TensorDtype::Float32, {o.ndfRows, o.ndfColumns}, sigma));
   file.set(TensorField::fromValues("ndf", TensorDtype::Float32, {o.ndfRows, o.ndfColumns}, ndf));
   const ParametricBilinear2D sigmaTable(sigma, o.ndfRows, o.ndfColumns, 1, {}, Mode::Values);

@@ -4,9 +4,12 @@
 //
 // Layout as the database's files (rgl_brdf.h, docs/references.md "RGL measured BRDFs"); the
 // contents are chosen so that the reader reproduces the function EXACTLY at known points:
-//  - ndf and sigma are positive bilinear functions of the unit coordinates (ndf = 0.5 +
-//    u_theta + 0.25 u_phi, sigma = 0.3 + 0.2 u_theta + 0.1 u_phi), which bilinear interpolation
-//    reproduces everywhere; the colour table absorbs them (rgb = value * 4 sigma / ndf);
+//  - ndf and sigma are positive functions of the unit coordinates, single-valued at the pole
+//    and periodic in azimuth, piecewise bilinear on their grid so that interpolation
+//    reproduces them everywhere (ndf = 0.5 + u_theta (1 + 0.5 tri(u_phi)), sigma = 0.3 +
+//    u_theta (0.2 + 0.1 tri(u_phi)), tri the triangle wave that is 1 at phi = 0 and 0 at
+//    +-pi; sigma without the azimuth term for isotropic files); the colour table absorbs them
+//    (rgb = value * 4 sigma / ndf);
 //  - the vndf of each incident direction is proportional to the luminance of the value times
 //    d(omega_o) / d(u_h) (the density a perfect sampler would have), plus a floor of 1% of its
 //    mean so that every half vector keeps a place on the square;
@@ -16,6 +19,8 @@
 //    will build from those float32 values: at an incident direction on the (phi_i, theta_i)
 //    grid and a point s on the colour grid, the reader's value equals the function's at the
 //    outgoing direction sampledOutgoing() returns, up to float32 rounding of the value itself.
+//    (Except on the colour grid's first column, which the warp maps to the pole theta_h = 0,
+//    where every row is the same direction pair and the reader reads one of them.)
 #pragma once
 
 #include <functional>
@@ -33,7 +38,7 @@ struct RglSynthesisOptions {
   // covering [-pi, pi], [-pi, 0] or [-pi, -pi/2] (reductions 1, 2, 4).
   std::vector<double> thetaI{0.0, 0.35, 0.7, 1.0, 1.25, 1.45};
   std::vector<double> phiI{0.0};
-  size_t ndfRows = 16, ndfColumns = 16;  // ndf and sigma grids
+  size_t ndfRows = 17, ndfColumns = 16;  // ndf and sigma grids (rows odd: u_phi = 0.5 a row)
   size_t vndfResolution = 48;
   size_t colourResolution = 24;
   // Empty: an RGB file ("rgb"); otherwise a spectral file ("spectra", "wavelengths") whose

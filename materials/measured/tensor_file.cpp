@@ -328,6 +328,15 @@ bool hasTensorFileMagic(std::span<const std::byte> bytes) {
   return bytes.size() >= Magic.size() && std::memcmp(bytes.data(), Magic.data(), Magic.size()) == 0;
 }
 
+bool isTensorFile(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::array<std::byte, Magic.size()> head{};
+  return in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size())) &&
+         hasTensorFileMagic(head);
+}
+
 TensorFile parseTensorFile(std::span<const std::byte> bytes, const std::string& source) {
   return Parser(bytes, source).parse();
 }

@@ -92,5 +92,7 @@ void writeTensorFile(const std::filesystem::path& path, const TensorFile& file);
 
 // True when `bytes` start with the tensor_file magic (format detection by content).
 bool hasTensorFileMagic(std::span<const std::byte> bytes);
+// True when the file at `path` can be opened and starts with the magic.
+bool isTensorFile(const std::filesystem::path& path);
 
 }  // namespace scatterlab

@@ -82,8 +82,9 @@ TEST(FitCli, JsonReportHoldsTheParametersTheMaterialAndTheVerdict) {
 TEST(FitCli, SameResultForAnyThreadCount) {
   const auto fitWith = [&](const std::string& threads) {
     const ProcessResult run =
-        runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+conductor", "--metric",
-                                               "cube-root", "--json", "--threads", threads} +
+        runScatterlab(std::vector<std::string>{"fit", Truth, "--model",
+                                               R"(lambertian+{"type":"conductor","eta":1,"k":1e8})",
+                                               "--metric", "cube-root", "--json", "--threads", threads} +
                       Quick);
     EXPECT_EQ(run.exitCode, 0) << describe(run);
     return json::parse(run.out).at("fit").at("parameters");

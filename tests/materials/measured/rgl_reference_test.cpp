@@ -168,10 +168,12 @@ TEST(RglFile, DescribesItself) {
   EXPECT_TRUE(felt->jacobian());
   EXPECT_EQ(felt->incidentAzimuths(), 1u);
   EXPECT_EQ(felt->incidentElevations(), 8u);
-  EXPECT_EQ(felt->vndfResolution(), 128u);
-  EXPECT_EQ(felt->colourResolution(), 32u);
+  EXPECT_EQ(felt->vndfRows(), 128u);
+  EXPECT_EQ(felt->vndfColumns(), 128u);
+  EXPECT_EQ(felt->colourRows(), 32u);
+  EXPECT_EQ(felt->colourColumns(), 32u);
   EXPECT_DOUBLE_EQ(felt->thetaMin(), 0.0);
-  EXPECT_NEAR(felt->thetaMax(), PiOver2, 1e-12);
+  EXPECT_NEAR(felt->thetaMax(), PiOver2, 1e-6);  // stored as float32
 }
 
 }  // namespace
