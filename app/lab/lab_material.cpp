@@ -31,12 +31,17 @@ LabMaterial loadMeasured(std::string name, const fs::path& file) {
   }
 }
 
+// A MERL table or an RGL file, told apart by content.
+LabMaterial loadMeasuredFile(std::string name, const fs::path& file) {
+  return isTensorFile(file) ? rglLabMaterial(std::move(name), file) : loadMeasured(std::move(name), file);
+}
+
 LabMaterial fromDescription(const std::string& name, const json& material) {
-  // A measured description goes through the registry's validation, then the table is read
-  // once and kept (its slices and fits need the table itself, not only the model).
+  // A measured description goes through the registry's validation, then the file is read
+  // once and kept (its slices and fits need the data itself, not only the model).
   if (material.is_object() && material.value("type", std::string()) == "measured") {
     const json completed = completeMaterial(material);
-    LabMaterial loaded = loadMeasured(name, completed.at("file").get<std::string>());
+    LabMaterial loaded = loadMeasuredFile(name, completed.at("file").get<std::string>());
     loaded.description = completed;
     return loaded;
   }
@@ -66,6 +71,24 @@ LabMaterial measuredLabMaterial(std::string name, const fs::path& file,
   return m;
 }
 
+LabMaterial rglLabMaterial(std::string name, const fs::path& file) {
+  std::unique_ptr<RglBrdf> brdf;
+  try {
+    brdf = readRglBrdf(file);
+  } catch (const TensorFileError& error) {
+    throw MaterialError("material key \"file\": " + std::string(error.what()));
+  }
+  LabMaterial m;
+  m.name = std::move(name);
+  m.kind = LabMaterialKind::Measured;
+  m.description = json{{"type", "measured"}, {"file", file.string()}};
+  m.rgl = brdf.get();
+  m.about =
+      "RGL measured BRDF " + file.string() + (brdf->description().empty() ? "" : ": " + brdf->description());
+  m.bsdf = std::move(brdf);
+  return m;
+}
+
 LabMaterial describedLabMaterial(std::string name, const json& material) {
   LabMaterial m;
   m.name = std::move(name);
@@ -82,8 +105,8 @@ LabMaterial describedLabMaterial(std::string name, const json& material) {
 }
 
 LabMaterial loadLabMaterial(const std::string& argument) {
-  if (!isInlineMaterial(argument) && endsWith(argument, ".binary"))
-    return loadMeasured(fs::path(argument).stem().string(), argument);
+  if (!isInlineMaterial(argument) && (endsWith(argument, ".binary") || isTensorFile(argument)))
+    return loadMeasuredFile(fs::path(argument).stem().string(), argument);
   const json material = loadMaterialArgument(argument);
   if (isInlineMaterial(argument)) {
     const std::string type =

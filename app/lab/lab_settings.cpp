@@ -23,7 +23,8 @@ LabSettings common(uint64_t seed) {
   s.fitFamilies = {{"Lambert + Cook-Torrance (Ngan)", "lambertian+ngan-cook-torrance"},
                    {"Lambert + GGX", std::string("lambertian+") + fitting::WhiteConductorSpec},
                    {"Lambert + Ward (Ngan)", "lambertian+ngan-ward"},
-                   {"Lambert + Blinn-Phong", "lambertian+blinn-phong"}};
+                   {"Lambert + Blinn-Phong", "lambertian+blinn-phong"},
+                   {"GGX conductor, index fitted", "conductor"}};
   return s;
 }
 
