@@ -16,9 +16,10 @@
 #include "app/option_values.h"
 #include "app/progress.h"
 #include "app/showcase.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
 
@@ -186,7 +187,8 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
   BsdfCheckOptions& kit = options.kit;
   command->add_option(
       "material", options.materials,
-      "Materials: inline JSON ('{\"type\": \"conductor\"}') or JSON files; none: a built-in showcase");
+      "Materials: inline JSON ('{\"type\": \"conductor\"}'), JSON files, or measured files (a MERL .binary "
+      "table or an RGL .bsdf file, told apart by content); none: a built-in showcase");
   // One value per --wi-theta, split at commas, so that the materials after it stay positional.
   command->add_option("--wi-theta", kit.wiThetaDeg, "Incident polar angles in degrees, comma-separated")
       ->type_name("DEGREES")

@@ -14,7 +14,7 @@
 #include "app/render_command.h"
 #include "app/shape_factor_command.h"
 #include "app/synth_command.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 

@@ -15,11 +15,12 @@
 #include "app/synth_command.h"
 #include "fitting/brdf_fit.h"
 #include "fitting/material_writer.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/rgl_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "app/exit_code.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/model_list.h"
 
 namespace scatterlab {
 

@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 

@@ -13,6 +13,8 @@
 #include "materials/bssrdf/annulus_profile.h"
 #include "materials/bssrdf/chandrasekhar_h.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/half_space_reference.h"
 #include "validation/profile_comparison.h"
 

@@ -22,8 +22,9 @@
 #include "integrator/render_error.h"
 #include "integrator/scene_presets.h"
 #include "integrator/silhouette_mask.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
@@ -175,7 +176,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       "materials make a labelled contact sheet (gallery)");
   command
       ->add_option("material", options.materials,
-                   "Material(s): inline JSON or JSON files; several: a gallery")
+                   "Material(s): inline JSON, JSON files, or measured files (MERL .binary, RGL .bsdf); "
+                   "several: a gallery")
       ->required();
   command
       ->add_option("--scene", options.scene,

@@ -18,10 +18,11 @@
 #include "app/option_values.h"
 #include "app/progress.h"
 #include "app/table_cache.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

@@ -14,9 +14,9 @@
 #include "integrator/path_tracer.h"
 #include "integrator/scene_presets.h"
 #include "materials/bsdf/lambertian.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/warp.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "materials/bsdf/metals.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::fitting {
 

@@ -36,7 +36,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fitting/lobe_kernels.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab::fitting {
 

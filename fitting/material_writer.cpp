@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::fitting {
 

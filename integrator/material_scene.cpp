@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

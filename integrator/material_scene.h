@@ -1,5 +1,5 @@
 // The renderer's answer to "can you render this material?": a registry material (JSON,
-// materials/bsdf/registry.h) made into what the renderer places on a shape, and the preset
+// materials/registry/) made into what the renderer places on a shape, and the preset
 // scene with it on its sphere, or MaterialError saying why not.
 //
 // Callers that hold a material description and want its picture (`scatterlab render`, the lab

@@ -4,7 +4,7 @@
 // (no acceleration structure: for fewer than ~10 analytic shapes a BVH only adds work), in
 // double precision, with no virtual call: spheres and planes live in arrays of their own.
 //
-// Materials are registry models (materials/bsdf/registry.h) owned by the scene; a surface
+// Materials are registry models (materials/registry/) owned by the scene; a surface
 // holds a material id. A material is one model or a checkerboard of two (the preview scene's
 // ground). Transmissive models are placed with Bsdf(model, frame, twoSided = false) (the side
 // of wi is what tells inside from outside); reflection-only models are two-sided.

@@ -50,9 +50,9 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
 // The negative controls (negative_controls.h) of `model`, each run through the chi-square
 // test at every incident angle (incidentAngles(): with transmission, from below too); a row
 // PASSES when the kit REJECTS the broken sampler.
-// `alteredSampler` (the same material 10% rougher, registry.h withMismatchedRoughness) enables
-// RoughnessMismatch; without it that control is reported as not applicable (a row with passed = true and a
-// note).
+// `alteredSampler` (the same material 10% rougher, materials/registry/spec_validation.h
+// withMismatchedRoughness) enables RoughnessMismatch; without it that control is reported as not applicable
+// (a row with passed = true and a note).
 CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler,
                                 const std::string& label, const BsdfCheckOptions& options,
                                 const ProgressCallback& progress = {});

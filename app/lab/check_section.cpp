@@ -7,7 +7,7 @@
 
 #include "app/check_command.h"
 #include "app/lab/html.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/subsurface_check.h"
 

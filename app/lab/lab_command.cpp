@@ -209,7 +209,8 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
       "with its chi-square maps, lobes, albedo, measured slices, fits and renders; none given: a showcase");
   command->add_option(
       "material", options.materials,
-      "Materials: inline JSON, JSON files, or MERL .binary files; none: the built-in showcase");
+      "Materials: inline JSON, JSON files, or measured files (MERL .binary, RGL .bsdf, told apart by "
+      "content); none: the built-in showcase");
   command->add_option("--out", options.out, "Report directory, replaced whole when the report is complete")
       ->type_name("DIR")
       ->capture_default_str();

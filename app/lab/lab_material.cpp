@@ -2,9 +2,11 @@
 
 #include <set>
 
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/measured/measured_file.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/chi_square_images.h"
 
 namespace scatterlab {
@@ -14,20 +16,13 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 std::string inQuotes(const std::string& text) { return "\"" + text + "\""; }
 
 LabMaterial loadMeasured(std::string name, const fs::path& file) {
   try {
     return measuredLabMaterial(std::move(name), file, std::make_shared<const MerlTable>(readMerl(file)));
   } catch (const MerlError& error) {
-    // The same words as the registry's measured entry.
-    throw MaterialError("material key \"file\": " + std::string(error.what()) +
-                        "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes)");
+    throw MaterialError(measuredFileProblem(error.what()));
   }
 }
 
@@ -76,7 +71,7 @@ LabMaterial rglLabMaterial(std::string name, const fs::path& file) {
   try {
     brdf = readRglBrdf(file);
   } catch (const TensorFileError& error) {
-    throw MaterialError("material key \"file\": " + std::string(error.what()));
+    throw MaterialError(measuredFileProblem(error.what()));
   }
   LabMaterial m;
   m.name = std::move(name);
@@ -105,7 +100,7 @@ LabMaterial describedLabMaterial(std::string name, const json& material) {
 }
 
 LabMaterial loadLabMaterial(const std::string& argument) {
-  if (!isInlineMaterial(argument) && (endsWith(argument, ".binary") || isTensorFile(argument)))
+  if (!isInlineMaterial(argument) && measuredFormatOf(argument))
     return loadMeasuredFile(fs::path(argument).stem().string(), argument);
   const json material = loadMaterialArgument(argument);
   if (isInlineMaterial(argument)) {

@@ -1,6 +1,6 @@
 // One material of a lab report: what it is, built once, with everything its sections need.
 // From the command line a MATERIAL is inline JSON, a JSON file, or a measured file: a MERL table
-// (a path ending in .binary) or an RGL .bsdf file (told by its content), short for
+// or an RGL .bsdf file (told by content: materials/measured/measured_file.h), short for
 // {"type": "measured", "file": PATH}.
 #pragma once
 

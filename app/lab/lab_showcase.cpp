@@ -5,9 +5,9 @@
 #include "app/measured_bundle.h"
 #include "app/synth_command.h"
 #include "app/table_cache.h"
-#include "materials/bsdf/registry.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

@@ -13,8 +13,8 @@
 #include "integrator/render.h"
 #include "integrator/render_error.h"
 #include "integrator/silhouette_mask.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/atomic_file.h"
+#include "materials/registry/parameter_spec.h"
 
 #ifndef SCATTERLAB_DATA_DIR
 #error "SCATTERLAB_DATA_DIR must name the data directory (app/CMakeLists.txt)"

@@ -161,4 +161,11 @@ class AshikhminShirleyBsdf final : public BsdfModel {
   double specularProbability_ = 1.0;
 };
 
+struct MaterialModel;
+
+// The material registry's "ashikhmin-shirley" model (materials/registry/model_list.h).
+MaterialModel ashikhminShirleyModel();
+// The material registry's "ngan-ashikhmin-shirley" model (materials/registry/model_list.h).
+MaterialModel nganAshikhminShirleyModel();
+
 }  // namespace scatterlab

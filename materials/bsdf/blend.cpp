@@ -1,7 +1,11 @@
 #include "materials/bsdf/blend.h"
 
+#include <memory>
 #include <stdexcept>
 #include <string>
+
+#include "materials/registry/material_model.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
@@ -76,6 +80,61 @@ std::optional<BsdfSample> BlendBsdf::sample(const Vec3d& wi, double uLobe, const
   if (!(s->pdf > 0.0)) return std::nullopt;
   s->weight = eval(wi, s->wo, mode) * (std::abs(s->wo.z) / s->pdf);
   return s;
+}
+
+// ---------------------------------------------------------------------------------------
+// The material registry's "blend" model (materials/registry/model_list.h): the
+// parameter spec and the function that builds it.
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<BsdfModel> buildBlend(const MaterialParameters& p) {
+  const std::vector<json>& materials = p.materials("materials");
+  std::unique_ptr<BsdfModel> models[2];
+  for (size_t i = 0; i < 2; ++i) {
+    try {
+      models[i] = makeBsdf(materials[i]);
+    } catch (const MaterialError& error) {
+      throw nestedMaterialError(error, "materials[" + std::to_string(i) + "]");
+    }
+  }
+  try {
+    return std::make_unique<BlendBsdf>(std::move(models[0]), std::move(models[1]), p.rgb("weight"));
+  } catch (const std::invalid_argument& error) {
+    throwMaterialKeyError(
+        "materials", json(materials), std::string("cannot be blended (") + error.what() + ")",
+        "two materials of which at most one has delta lobes, and transmissive ones with the same index");
+  }
+}
+
+}  // namespace
+
+MaterialModel blendModel() {
+  return {
+      .type = "blend",
+      .description =
+          "Mixture of two materials, f = w fA + (1 - w) fB per channel, sampled as the mixture (exact "
+          "pdf with the channel mean of w)",
+      .citation = "pbrt-v3 MixMaterial; Mitsuba 0.6 blendbsdf (mixture sampling by a lobe choice)",
+      .parameters = {{.name = "weight",
+                      .kind = ParameterKind::Rgb,
+                      .range = ValueRange::closed(0.0, 1.0),
+                      .defaultValue = 0.5,
+                      .description =
+                          "how much of the first material per linear-RGB channel (the second gets 1 - "
+                          "weight); the first is sampled with the channel mean"},
+                     {.name = "materials",
+                      .kind = ParameterKind::Materials,
+                      .defaultValue =
+                          json::array({json{{"type", "lambertian"}}, json{{"type", "conductor"}}}),
+                      .description = "the two materials [first, second]; at most one with delta lobes, "
+                                     "transmissive ones with the same index",
+                      .materialCount = 2}},
+      .alternatives = {},
+      .build = buildBlend,
+  };
 }
 
 }  // namespace scatterlab

@@ -60,4 +60,9 @@ class BlendBsdf final : public BsdfModel {
   double interiorIndex_ = 1.0;
 };
 
+struct MaterialModel;
+
+// The material registry's "blend" model (materials/registry/model_list.h).
+MaterialModel blendModel();
+
 }  // namespace scatterlab

@@ -1,8 +1,13 @@
 #include "materials/bsdf/conductor.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
+
+#include "materials/bsdf/conductor_index_spec.h"
+#include "materials/bsdf/microfacet_spec.h"
+#include "materials/registry/material_model.h"
 
 namespace scatterlab {
 
@@ -24,6 +29,48 @@ std::unique_ptr<BsdfModel> makeMicrofacetConductor(MicrofacetType type, double a
           BeckmannDistribution<double>(alphaX, alphaY), eta, k, sampling, multipleScattering);
   }
   throw std::invalid_argument("unknown microfacet distribution");
+}
+
+// ---------------------------------------------------------------------------------------
+// The material registry's "conductor" model (materials/registry/model_list.h): the
+// parameter spec and the function that builds it.
+
+namespace {
+
+constexpr std::array<NamedChoice<MicrofacetSampling>, 2> MicrofacetSamplings{{
+    {"visible", MicrofacetSampling::Visible},
+    {"classic", MicrofacetSampling::Classic},
+}};
+
+std::unique_ptr<BsdfModel> buildConductor(const MaterialParameters& p) {
+  const ConductorIndex index = conductorIndex(p);
+  const Vec2d alpha = p.pair("alpha");
+  return makeMicrofacetConductor(choiceValue(MicrofacetTypes, p.choice("distribution")), alpha.x, alpha.y,
+                                 index.eta, index.k, choiceValue(MicrofacetSamplings, p.choice("sampling")),
+                                 choiceValue(MultipleScatterings, p.choice("multiscatter")));
+}
+
+}  // namespace
+
+MaterialModel conductorModel() {
+  return {
+      .type = "conductor",
+      .description = "Rough metal: anisotropic GGX or Beckmann microfacets, exact conductor Fresnel",
+      .citation =
+          "Walter et al. 2007 (microfacet BRDF); Heitz 2014 (Smith height-correlated G2); "
+          "Heitz 2018 (GGX visible normals); Kulla & Conty 2017 (multiple-scattering compensation)",
+      .parameters = joinParameters({microfacetParameters(),
+                                    conductorIndexParameters(),
+                                    {{.name = "sampling",
+                                      .kind = ParameterKind::Choice,
+                                      .choices = choiceNames(MicrofacetSamplings),
+                                      .defaultValue = "visible",
+                                      .description = "visible-normal sampling, or classic D cos sampling"},
+                                     multipleScatteringParameter("tabulated albedos")}}),
+      .alternatives = conductorIndexAlternatives(),
+      .build = buildConductor,
+      .lobeWidthParameter = "alpha",
+  };
 }
 
 }  // namespace scatterlab

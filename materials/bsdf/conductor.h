@@ -165,4 +165,9 @@ std::unique_ptr<BsdfModel> makeMicrofacetConductor(
     MicrofacetSampling sampling = MicrofacetSampling::Visible,
     MultipleScattering multipleScattering = MultipleScattering::None);
 
+struct MaterialModel;
+
+// The material registry's "conductor" model (materials/registry/model_list.h).
+MaterialModel conductorModel();
+
 }  // namespace scatterlab

@@ -85,4 +85,9 @@ class NganCookTorranceBsdf final : public BsdfModel {
   BeckmannDistribution<double> distribution_;
 };
 
+struct MaterialModel;
+
+// The material registry's "ngan-cook-torrance" model (materials/registry/model_list.h).
+MaterialModel nganCookTorranceModel();
+
 }  // namespace scatterlab

@@ -1,8 +1,11 @@
 #include "materials/bsdf/disney.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
+
+#include "materials/registry/material_model.h"
 
 namespace scatterlab {
 namespace {
@@ -90,6 +93,74 @@ std::optional<BsdfSample> DisneyBsdf::sample(const Vec3d& wi, double uLobe, cons
   const double density = pdf(wi, wo);
   if (!(density > 0)) return std::nullopt;
   return BsdfSample{wo, eval(wi, wo) * (wo.z / density), density, lobe, 1.0};
+}
+
+// ---------------------------------------------------------------------------------------
+// The material registry's "disney" model (materials/registry/model_list.h): the
+// parameter spec and the function that builds it.
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<BsdfModel> buildDisney(const MaterialParameters& p) {
+  DisneyParameters d;
+  d.baseColor = p.rgb("baseColor");
+  d.metallic = p.number("metallic");
+  d.subsurface = p.number("subsurface");
+  d.specular = p.number("specular");
+  d.specularTint = p.number("specularTint");
+  d.roughness = p.number("roughness");
+  d.anisotropic = p.number("anisotropic");
+  d.sheen = p.number("sheen");
+  d.sheenTint = p.number("sheenTint");
+  d.clearcoat = p.number("clearcoat");
+  d.clearcoatGloss = p.number("clearcoatGloss");
+  return std::make_unique<DisneyBsdf>(d);
+}
+
+}  // namespace
+
+MaterialModel disneyModel() {
+  const DisneyParameters d;  // disney.brdf's defaults
+  const ValueRange unit = ValueRange::closed(0.0, 1.0);
+  return {
+      .type = "disney",
+      .description =
+          "Disney principled BRDF as disney.brdf: retro-reflective diffuse or subsurface, sheen, "
+          "anisotropic GGX specular, GTR1 clearcoat (not energy-conserving)",
+      .citation =
+          "Burley 2012, Physically-Based Shading at Disney, section 5 and appendix B; BRDF Explorer "
+          "disney.brdf (separable Smith G)",
+      .parameters =
+          {{.name = "baseColor",
+            .kind = ParameterKind::Rgb,
+            .range = unit,
+            .defaultValue = json::array({d.baseColor.x, d.baseColor.y, d.baseColor.z}),
+            .description = "base colour per linear-RGB channel (the BRDF Explorer's default "
+                           "(0.82, 0.67, 0.16) is gamma 2.2, linearised here)"},
+           numberParameter("metallic", unit, d.metallic, "0 dielectric, 1 metal (specular tinted by base)"),
+           numberParameter("subsurface", unit, d.subsurface,
+                           "blend from the diffuse to the Hanrahan-Krueger-like subsurface shape"),
+           numberParameter("specular", unit, d.specular, "dielectric specular F0 = 0.08 specular"),
+           numberParameter("specularTint", unit, d.specularTint,
+                           "tints the dielectric F0 toward the base hue"),
+           numberParameter(
+               "roughness", unit, d.roughness,
+               "alpha = roughness^2 (alpha_x, alpha_y >= 0.001); also the diffuse retro-reflection"),
+           numberParameter(
+               "anisotropic", unit, d.anisotropic,
+               "aspect sqrt(1 - 0.9 anisotropic): alpha_x = alpha / aspect, alpha_y = alpha aspect"),
+           numberParameter("sheen", unit, d.sheen, "grazing sheen strength"),
+           numberParameter("sheenTint", unit, d.sheenTint, "tints the sheen toward the base hue"),
+           numberParameter("clearcoat", unit, d.clearcoat,
+                           "clearcoat layer strength (weight 0.25 clearcoat)"),
+           numberParameter("clearcoatGloss", unit, d.clearcoatGloss,
+                           "clearcoat GTR1 alpha = 0.1 (gloss 0) .. 0.001 (gloss 1)")},
+      .alternatives = {},
+      .build = buildDisney,
+      .lobeWidthParameter = "roughness",
+  };
 }
 
 }  // namespace scatterlab

@@ -197,4 +197,9 @@ class DisneyBsdf final : public BsdfModel {
   bool hasDiffuse_, hasClearcoat_;
 };
 
+struct MaterialModel;
+
+// The material registry's "disney" model (materials/registry/model_list.h).
+MaterialModel disneyModel();
+
 }  // namespace scatterlab

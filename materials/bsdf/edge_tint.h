@@ -1,7 +1,8 @@
 // A conductor's complex index (eta, k) from two quantities a fit can tell apart: the
 // normal-incidence reflectance r and the "edge tint" g, which sets how the reflectance turns
 // toward white at grazing angles (Gulbrandsen 2014, "Artist Friendly Metallic Fresnel", JCGT
-// 3(4), eqs. 3-4; docs/references.md). For r in [0, 1) and g in [0, 1]:
+// 3(4), eqs. 3-4; docs/references.md, "Conductor index from reflectance and edge tint"). For r
+// in [0, 1) and g in [0, 1]:
 //   eta = g (1 - r) / (1 + r) + (1 - g) (1 + sqrt r) / (1 - sqrt r),
 //   k   = sqrt((r (eta + 1)^2 - (eta - 1)^2) / (1 - r)),
 // which has normal-incidence reflectance ((eta-1)^2 + k^2) / ((eta+1)^2 + k^2) = r for every g:

@@ -1,5 +1,9 @@
 #include "materials/bsdf/eon.h"
 
+#include <memory>
+
+#include "materials/registry/material_model.h"
+
 namespace scatterlab {
 
 // The paper's fits of the LTC matrix entries to the EON lobe (section 5.2), in the frame whose
@@ -71,6 +75,49 @@ std::optional<BsdfSample> EonBsdf::sample(const Vec3d& wi, double uLobe, const V
   const double density = pUniform * uniformHemispherePdf() + (1.0 - pUniform) * cltc.pdf(*wo);
   if (!(density > 0)) return std::nullopt;
   return BsdfSample{*wo, eval(wi, *wo) * (wo->z / density), density, LobeFlags::DiffuseReflection, 1.0};
+}
+
+// ---------------------------------------------------------------------------------------
+// The material registry's "eon" model (materials/registry/model_list.h): the
+// parameter spec and the function that builds it.
+
+namespace {
+
+constexpr std::array<NamedChoice<EonAlbedo>, 2> EonAlbedos{{
+    {"fitted", EonAlbedo::Fitted},
+    {"analytic", EonAlbedo::Analytic},
+}};
+
+std::unique_ptr<BsdfModel> buildEon(const MaterialParameters& p) {
+  return std::make_unique<EonBsdf>(p.rgb("albedo"), p.number("roughness"),
+                                   choiceValue(EonAlbedos, p.choice("directional_albedo")));
+}
+
+}  // namespace
+
+MaterialModel eonModel() {
+  return {
+      .type = "eon",
+      .description =
+          "Energy-preserving rough diffuse (EON): Fujii's Oren-Nayar plus a multiple-scattering lobe, "
+          "clipped-LTC sampling",
+      .citation =
+          "Portsmouth, Kutz & Hill 2025, EON: A Practical Energy-Preserving Rough Diffuse BRDF, JCGT 14(1) "
+          "(eq. 3-10, section 5); Fujii 2013, A tiny improvement of Oren-Nayar reflectance model",
+      .parameters = {rgbParameter("albedo", 0.8, "single-scattering albedo rho per linear-RGB channel"),
+                     numberParameter("roughness", ValueRange::closed(0.0, 1.0), 0.5,
+                                     "EON roughness r (0: Lambert); not Oren-Nayar's sigma in radians"),
+                     {.name = "directional_albedo",
+                      .kind = ParameterKind::Choice,
+                      .choices = choiceNames(EonAlbedos),
+                      .defaultValue = "fitted",
+                      .description =
+                          "FON albedo in the multiple-scattering lobe: the paper's fit (\"fitted\", "
+                          "white albedo 1 within 5.4e-4) or the analytic form (\"analytic\", exactly 1)"}},
+      .alternatives = {},
+      .build = buildEon,
+      .lobeWidthParameter = "roughness",
+  };
 }
 
 }  // namespace scatterlab

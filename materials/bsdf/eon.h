@@ -134,4 +134,9 @@ class EonBsdf final : public BsdfModel {
   EonAlbedo albedo_;
 };
 
+struct MaterialModel;
+
+// The material registry's "eon" model (materials/registry/model_list.h).
+MaterialModel eonModel();
+
 }  // namespace scatterlab

@@ -130,4 +130,9 @@ class LafortuneBsdf final : public BsdfModel {
   LafortuneNormalization normalization_;
 };
 
+struct MaterialModel;
+
+// The material registry's "lafortune" model (materials/registry/model_list.h).
+MaterialModel lafortuneModel();
+
 }  // namespace scatterlab

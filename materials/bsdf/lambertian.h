@@ -38,4 +38,9 @@ class LambertianBsdf final : public BsdfModel {
   Rgb albedo_;
 };
 
+struct MaterialModel;
+
+// The material registry's "lambertian" model (materials/registry/model_list.h).
+MaterialModel lambertianModel();
+
 }  // namespace scatterlab

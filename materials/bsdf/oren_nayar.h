@@ -50,4 +50,9 @@ class OrenNayarBsdf final : public BsdfModel {
   double sigma_;
 };
 
+struct MaterialModel;
+
+// The material registry's "oren-nayar" model (materials/registry/model_list.h).
+MaterialModel orenNayarModel();
+
 }  // namespace scatterlab

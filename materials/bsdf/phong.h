@@ -103,4 +103,11 @@ template <typename Lobe> class NormalizedPhongBsdf final : public BsdfModel {
 using PhongBsdf = NormalizedPhongBsdf<PhongLobe>;
 using BlinnPhongBsdf = NormalizedPhongBsdf<BlinnPhongLobe>;
 
+struct MaterialModel;
+
+// The material registry's "phong" model (materials/registry/model_list.h).
+MaterialModel phongModel();
+// The material registry's "blinn-phong" model (materials/registry/model_list.h).
+MaterialModel blinnPhongModel();
+
 }  // namespace scatterlab

@@ -250,4 +250,9 @@ std::unique_ptr<BsdfModel> makeRoughDielectric(
     MicrofacetType type, double alphaX, double alphaY, double eta,
     MultipleScattering multipleScattering = MultipleScattering::None);
 
+struct MaterialModel;
+
+// The material registry's "rough-dielectric" model (materials/registry/model_list.h).
+MaterialModel roughDielectricModel();
+
 }  // namespace scatterlab

@@ -1,8 +1,13 @@
 #include "materials/bsdf/rough_plastic.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
+
+#include "materials/bsdf/dielectric_index_spec.h"
+#include "materials/bsdf/microfacet_spec.h"
+#include "materials/registry/material_model.h"
 
 namespace scatterlab {
 
@@ -27,6 +32,52 @@ std::unique_ptr<BsdfModel> makeRoughPlastic(MicrofacetType type, double alpha, c
           BeckmannDistribution<double>(alpha, alpha), kd, eta);
   }
   throw std::invalid_argument("unknown microfacet distribution");
+}
+
+// ---------------------------------------------------------------------------------------
+// The material registry's "rough-plastic" model (materials/registry/model_list.h): the
+// parameter spec and the function that builds it.
+
+namespace {
+
+std::unique_ptr<BsdfModel> buildRoughPlastic(const MaterialParameters& p) {
+  return makeRoughPlastic(choiceValue(MicrofacetTypes, p.choice("distribution")), p.number("alpha"),
+                          p.rgb("diffuse"), p.number("eta"));
+}
+
+}  // namespace
+
+MaterialModel roughPlasticModel() {
+  return {
+      .type = "rough-plastic",
+      .description =
+          "Rough dielectric coating (GGX or Beckmann, isotropic) over a Lambertian base, internal "
+          "reflections summed; energy-coupled: albedo <= 1, lossless for a white base",
+      .citation =
+          "Walter et al. 2007 eq. 20 (coating); Weidlich & Wilkie 2007 and Mitsuba 0.6 plastic/roughplastic "
+          "(layer, 1 / (1 - kd Fdr) series, 1/eta^2); Kelemen & Szirmay-Kalos 2001 (1 - E coupling)",
+      .parameters = {{.name = "distribution",
+                      .kind = ParameterKind::Choice,
+                      .choices = choiceNames(MicrofacetTypes),
+                      .defaultValue = "ggx",
+                      .description = "microfacet normal distribution of the coating"},
+                     {.name = "alpha",
+                      .kind = ParameterKind::Number,
+                      .range = ValueRange::closed(0.001, 1.0),
+                      .defaultValue = 0.1,
+                      .description = "roughness of the coating (isotropic: the energy coupling tabulates the "
+                                     "coating's albedo over the incident angle)"},
+                     {.name = "diffuse",
+                      .kind = ParameterKind::Rgb,
+                      .range = ValueRange::closed(0.0, 1.0),
+                      .defaultValue = 0.5,
+                      .description = "reflectance of the base under the coating per linear-RGB channel"},
+                     dielectricIndexParameter(DielectricIndexRange,
+                                              "index of refraction of the coating relative to outside")},
+      .alternatives = {},
+      .build = buildRoughPlastic,
+      .lobeWidthParameter = "alpha",
+  };
 }
 
 }  // namespace scatterlab

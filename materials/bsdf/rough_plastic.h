@@ -182,4 +182,9 @@ template <typename Distribution> class RoughPlasticBsdf final : public BsdfModel
 // (std::invalid_argument otherwise; the registry reports the allowed ranges to the user).
 std::unique_ptr<BsdfModel> makeRoughPlastic(MicrofacetType type, double alpha, const Rgb& kd, double eta);
 
+struct MaterialModel;
+
+// The material registry's "rough-plastic" model (materials/registry/model_list.h).
+MaterialModel roughPlasticModel();
+
 }  // namespace scatterlab

@@ -40,4 +40,9 @@ class SmoothConductorBsdf final : public BsdfModel {
   Rgb eta_, k_;
 };
 
+struct MaterialModel;
+
+// The material registry's "smooth-conductor" model (materials/registry/model_list.h).
+MaterialModel smoothConductorModel();
+
 }  // namespace scatterlab

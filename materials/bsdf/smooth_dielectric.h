@@ -62,4 +62,9 @@ class SmoothDielectricBsdf final : public BsdfModel {
   double eta_;
 };
 
+struct MaterialModel;
+
+// The material registry's "dielectric" model (materials/registry/model_list.h).
+MaterialModel dielectricModel();
+
 }  // namespace scatterlab

@@ -55,4 +55,9 @@ class ThinDielectricBsdf final : public BsdfModel {
   double eta_;
 };
 
+struct MaterialModel;
+
+// The material registry's "thin-dielectric" model (materials/registry/model_list.h).
+MaterialModel thinDielectricModel();
+
 }  // namespace scatterlab

@@ -96,4 +96,11 @@ class WardBsdf final : public BsdfModel {
   BeckmannDistribution<double> distribution_;
 };
 
+struct MaterialModel;
+
+// The material registry's "ward" model (materials/registry/model_list.h).
+MaterialModel wardModel();
+// The material registry's "ngan-ward" model (materials/registry/model_list.h).
+MaterialModel nganWardModel();
+
 }  // namespace scatterlab

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "materials/bssrdf/measured_media.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 

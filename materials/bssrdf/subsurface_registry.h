@@ -1,14 +1,14 @@
 // The registry entry of subsurface materials (docs/design.md, "Material descriptions"):
 //   {"type": "subsurface", "profile": "burley", "medium": "Skin1", "scale": 1.0}
-// It shares the BSDF registry's parameter specs and validation (registry.h: every error names
+// It shares the BSDF registry's parameter specs and validation (materials/registry/: every error names
 // the key, the value and what is allowed), is listed by `scatterlab models` with the BSDFs
 // (kind "subsurface"), and is built by makeSubsurface rather than makeBsdf.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_material.h"
+#include "materials/registry/material_model.h"
 
 namespace scatterlab {
 

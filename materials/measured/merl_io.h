@@ -66,6 +66,10 @@ class MerlTable {
 // infinite value (the first one's channel and cell, and how many).
 MerlTable readMerl(const std::filesystem::path& path);
 
+// True when the file at `path` can be opened and starts with the MERL header (int32 90, 90,
+// 180, little-endian): format detection by content, whatever the rest of the file holds.
+bool isMerlFile(const std::filesystem::path& path);
+
 // Writes atomically (temporary file, then rename): a failure leaves no file behind. Throws
 // MerlError if the directory does not exist or cannot be written, or if a value is not
 // finite (the reader would reject the file).

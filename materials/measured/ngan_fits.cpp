@@ -7,7 +7,7 @@
 #include <fstream>
 #include <optional>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 

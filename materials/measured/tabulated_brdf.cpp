@@ -1,6 +1,8 @@
 #include "materials/measured/tabulated_brdf.h"
 
 #include <algorithm>
+#include <memory>
+
 
 namespace scatterlab {
 

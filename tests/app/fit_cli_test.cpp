@@ -11,8 +11,8 @@
 
 #include "cli_runner.h"
 #include "materials/bsdf/metals.h"
-#include "materials/bsdf/registry.h"
 #include "materials/measured/merl_io.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

@@ -11,7 +11,7 @@
 #include "app/lab/html.h"
 #include "cli_runner.h"
 #include "integrator/material_scene.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 namespace {

@@ -15,7 +15,7 @@
 #include "app/exit_code.h"
 #include "app/lab/renders_section.h"
 #include "integrator/material_scene.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 
 #include "cli_runner.h"
 

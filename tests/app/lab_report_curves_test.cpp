@@ -9,9 +9,9 @@
 #include "app/lab/lobe_curves.h"
 #include "app/lab/measured_slice.h"
 #include "cli_runner.h"
-#include "materials/bsdf/registry.h"
 #include "materials/measured/merl_format.h"
 #include "materials/measured/tabulated_brdf.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

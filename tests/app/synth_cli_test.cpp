@@ -15,9 +15,9 @@
 #include "app/synth_command.h"
 #include "cli_runner.h"
 #include "materials/bsdf/lambertian.h"
-#include "materials/bsdf/registry.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

@@ -14,11 +14,11 @@
 #include "fitting/brdf_fit.h"
 #include "fitting/brdf_samples.h"
 #include "fitting/fit_model.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/rng.h"
 #include "materials/measured/half_diff.h"
 #include "materials/measured/merl_format.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::fitting::test {
 

@@ -12,6 +12,9 @@
 #include "integrator/render.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 #include "render_test_support.h"
 
 namespace scatterlab {

@@ -9,7 +9,7 @@
 
 #include "integrator/material_scene.h"
 #include "integrator/render.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
 namespace {

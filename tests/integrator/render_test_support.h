@@ -16,7 +16,7 @@
 #include "integrator/environment.h"
 #include "integrator/render.h"
 #include "integrator/scene_presets.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::render_test {
 

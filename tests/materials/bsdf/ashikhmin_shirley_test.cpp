@@ -7,7 +7,7 @@
 
 #include "catalog_suite.h"
 #include "materials/bsdf/ashikhmin_shirley.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

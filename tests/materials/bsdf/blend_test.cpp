@@ -12,10 +12,12 @@
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/lambertian.h"
 #include "materials/bsdf/metals.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bsdf/smooth_conductor.h"
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/core/rng.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

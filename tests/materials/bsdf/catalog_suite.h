@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/negative_controls.h"
 

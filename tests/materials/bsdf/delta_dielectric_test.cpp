@@ -20,6 +20,8 @@
 #include "catalog_suite.h"
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/bsdf/thin_dielectric.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

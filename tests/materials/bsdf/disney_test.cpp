@@ -11,7 +11,8 @@
 #include <cmath>
 
 #include "materials/bsdf/disney.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/chi_square.h"
 #include "validation/energy.h"
 

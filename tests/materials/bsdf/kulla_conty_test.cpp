@@ -12,10 +12,10 @@
 
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/fresnel_average.h"
-#include "materials/bsdf/registry.h"
 #include "materials/core/gauss_legendre.h"
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 
 namespace scatterlab {

@@ -8,8 +8,10 @@
 
 #include "materials/bsdf/lambertian.h"
 #include "materials/bsdf/metals.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

@@ -12,11 +12,12 @@
 #include <map>
 
 #include "catalog_suite.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bsdf/rough_dielectric.h"
 #include "materials/bsdf/rough_dielectric_albedo.h"
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/reciprocity.h"
 
 namespace scatterlab {

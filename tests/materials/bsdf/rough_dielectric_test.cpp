@@ -9,10 +9,11 @@
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
-#include "materials/bsdf/registry.h"
 #include "materials/bsdf/rough_dielectric_albedo.h"
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {
@@ -325,7 +326,8 @@ TEST(RoughDielectric, RegistryDefaultsRangesAndExampleFiles) {
   EXPECT_NO_THROW(makeBsdf(
       {{"type", "rough-dielectric"}, {"distribution", "beckmann"}, {"alpha", {0.001, 1.0}}, {"eta", 4.0}}));
   EXPECT_THROW(makeBsdf({{"type", "rough-dielectric"}, {"eta", 1.0}}), MaterialError);
-  // Below 1.02 the refracted lobe is too narrow for the kit to check (registry.cpp).
+  // Below 1.02 the refracted lobe is too narrow for the kit to check
+  // (materials/bsdf/dielectric_index_spec.h).
   EXPECT_NO_THROW(makeBsdf({{"type", "rough-dielectric"}, {"eta", 1.02}}));
   try {
     makeBsdf({{"type", "rough-dielectric"}, {"eta", 1.01}});

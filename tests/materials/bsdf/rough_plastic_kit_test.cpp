@@ -18,7 +18,7 @@ struct PlasticCase {
 };
 
 // Appended piece by piece: a chain of + here trips GCC 12's -Wrestrict (a false positive, GCC
-// bug 105329; registry.cpp's inQuotes does the same).
+// bug 105329; materials/registry/parameter_spec.cpp's inQuotes does the same).
 std::string name(const PlasticCase& c) {
   const auto n = catalog_suite::number;
   std::string out = c.type == MicrofacetType::Ggx ? "Ggx" : "Beckmann";

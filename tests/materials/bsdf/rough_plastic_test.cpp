@@ -10,10 +10,11 @@
 #include "fixed_pairs.h"
 #include "materials/bsdf/diffuse_fresnel.h"
 #include "materials/bsdf/microfacet_albedo.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bsdf/rough_plastic.h"
 #include "materials/core/quadrature.h"
 #include "materials/core/rng.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

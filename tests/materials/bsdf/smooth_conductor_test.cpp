@@ -14,6 +14,9 @@
 #include "catalog_suite.h"
 #include "materials/bsdf/metals.h"
 #include "materials/bsdf/smooth_conductor.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/model_list.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

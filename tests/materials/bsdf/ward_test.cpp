@@ -7,8 +7,9 @@
 
 #include "catalog_suite.h"
 #include "fixed_pairs.h"
-#include "materials/bsdf/registry.h"
 #include "materials/bsdf/ward.h"
+#include "materials/registry/material_file.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

@@ -2,6 +2,7 @@
 
 #include "bssrdf_test_support.h"
 #include "materials/bssrdf/subsurface_registry.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

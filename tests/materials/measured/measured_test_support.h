@@ -14,9 +14,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "materials/bsdf/registry.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab::measured_test {
 

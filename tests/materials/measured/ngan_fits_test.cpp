@@ -6,8 +6,8 @@
 #include <fstream>
 #include <set>
 
-#include "materials/bsdf/registry.h"
 #include "materials/measured/ngan_fits.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 namespace {

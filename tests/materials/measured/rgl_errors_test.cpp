@@ -7,7 +7,7 @@
 #include <fstream>
 #include <limits>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 #include "materials/measured/rgl_brdf.h"
 #include "materials/measured/rgl_synthesis.h"
 #include "measured_test_support.h"

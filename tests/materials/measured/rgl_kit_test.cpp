@@ -7,7 +7,7 @@
 
 #include <cstdio>
 
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 #include "materials/measured/rgl_brdf.h"
 #include "materials/measured/rgl_synthesis.h"
 #include "validation/bsdf_check.h"

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "materials/bsdf/metal_reduction.h"
-#include "materials/bsdf/registry.h"
+#include "materials/registry/spec_validation.h"
 #include "materials/measured/rgl_brdf.h"
 #include "materials/measured/rgl_synthesis.h"
 #include "measured_test_support.h"

@@ -1,18 +1,15 @@
-// The material registry: builds every BSDF model from its JSON description and describes
-// every model's parameters for `scatterlab models` (docs/design.md, "Material descriptions").
+// What a material description's parameters may be: the declarative spec of one parameter
+// (docs/design.md, "Material descriptions"), the validated values a build function reads, the
+// error every bad description throws, and the words its messages are made of.
 //
-// Each model is one entry: a declarative parameter spec and a build function. Parsing and
-// validation are generic over the spec, so an error always names the key, the value given
-// and what is allowed, the same way for every model, and adding a model touches nothing but
-// its entry in registry.cpp.
+// Parsing and validation are generic over the spec (spec_validation.h), so an error always
+// names the key, the value given and what is allowed, the same way for every model.
 #pragma once
 
 #include <array>
+#include <initializer_list>
 #include <limits>
 #include <map>
-#include <memory>
-#include <optional>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "materials/bsdf/bsdf.h"
+#include "materials/core/math.h"
 
 namespace scatterlab {
 
@@ -76,6 +73,19 @@ struct ParameterSpec {
   std::string allowed() const;
 };
 
+// The names of a pair parameter's two components: "alpha_x", "alpha_y".
+std::array<std::string, 2> pairComponentNames(const ParameterSpec& spec);
+
+// ---- Spec pieces that many models share.
+
+// A number parameter with a default.
+ParameterSpec numberParameter(std::string name, ValueRange range, double defaultValue,
+                              std::string description);
+// An rgb parameter in [0, 1] with a default: a reflectance or albedo per linear-RGB channel.
+ParameterSpec rgbParameter(std::string name, double defaultValue, std::string description);
+// Parameter lists joined in order, for models that share some of their parameters.
+std::vector<ParameterSpec> joinParameters(std::initializer_list<std::vector<ParameterSpec>> parts);
+
 // A parameter's value after validation, in the form its kind describes.
 // Materials: the nested materials, validated and completed (built by the build function).
 using ParameterValue = std::variant<double, Rgb, Vec2d, std::string, std::vector<nlohmann::json>>;
@@ -125,90 +135,20 @@ E choiceValue(const std::array<NamedChoice<E>, N>& table, std::string_view name)
   throw std::logic_error("choice \"" + std::string(name) + "\" missing from its table");
 }
 
-using BuildBsdfFunction = std::unique_ptr<BsdfModel> (*)(const MaterialParameters&);
-// Fills defaults that depend on other parameters (a subsurface medium's index of refraction)
-// into the parameters and the completed description, and rejects combinations the spec alone
-// cannot (throws MaterialError). Runs after every parameter has been validated.
-using CompleteDependentFunction = void (*)(MaterialParameters&, nlohmann::json& completed);
+// ---- Words for values and lists in error messages.
 
-// What a model builds: a BSDF (makeBsdf), or a subsurface material, a BSSRDF
-// (materials/bssrdf/subsurface_registry.h, makeSubsurface). Both share the parameter specs
-// and their validation.
-enum class MaterialKind { Bsdf, Subsurface };
-
-// One registry entry.
-struct MaterialModel {
-  std::string type{};
-  MaterialKind kind = MaterialKind::Bsdf;
-  std::string description{};  // one line
-  std::string citation{};
-  std::vector<ParameterSpec> parameters{};
-  // Sets of keys that say the same thing in different ways (a conductor's "metal", or "eta"
-  // with "k"). A material gives at most one set, and all of it; with none given, the first
-  // set's defaults apply.
-  std::vector<std::vector<std::string>> alternatives{};
-  BuildBsdfFunction build = nullptr;  // Bsdf models
-  CompleteDependentFunction completeDependent = nullptr;
-  // The parameter that sets the width of the model's main lobe ("alpha", "sigma", a Phong
-  // "exponent"), which withScaledRoughness scales for the roughness-mismatch negative
-  // control; empty for models without one. An exponent narrows the lobe as it grows:
-  // `widerWhenLarger` is false for it.
-  std::string lobeWidthParameter{};
-  bool widerWhenLarger = true;
-
-  const ParameterSpec* findParameter(std::string_view name) const;
-};
-
-// Every model, in the order `scatterlab models` lists them.
-std::span<const MaterialModel> materialModels();
-const MaterialModel* findMaterialModel(std::string_view type);
-
-// The catalog as JSON: [{type, description, citation, parameters: [{name, kind, allowed,
-// min, max, min_open, max_open, choices, default, description}], alternatives}].
-nlohmann::json materialCatalogJson();
-
-// A material description validated against its model's spec: the model, the parameters with
-// every default filled in, and the completed description.
-struct ValidatedMaterial {
-  const MaterialModel* model = nullptr;
-  MaterialParameters parameters;
-  nlohmann::json completed;  // the material as given, plus every default that applies
-};
-// Throws MaterialError on any invalid description (any kind of model).
-ValidatedMaterial validateMaterial(const nlohmann::json& material);
+// "0.5", "inf", "NaN".
+std::string formatNumber(double x);
+// The value as JSON text, cut at 80 characters; NaN and infinities as such (json::dump writes
+// them as null, which would hide the very value at fault).
+std::string formatValue(const nlohmann::json& value);
+std::string inQuotes(std::string_view text);
+// "a", "a" and "b", ... joined with `separator`, each quoted.
+std::string quotedList(const std::vector<std::string>& items, std::string_view separator = ", ");
 
 // Throws the MaterialError every check of a key throws: "material key "KEY": VALUE PROBLEM;
 // allowed: ALLOWED" (for builders that check what the spec alone cannot).
 [[noreturn]] void throwMaterialKeyError(std::string_view key, const nlohmann::json& value,
                                         std::string_view problem, std::string_view allowed);
-
-// Builds the BSDF a material describes; throws MaterialError on any invalid description, and
-// for a material that is not a BSDF (a subsurface material).
-std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material);
-
-// The same material with every default filled in (validated; throws MaterialError), so that
-// what is printed is exactly what was built.
-nlohmann::json completeMaterial(const nlohmann::json& material);
-
-// The material made `factor` (> 0) times rougher: its lobe-width parameter (MaterialModel::
-// lobeWidthParameter) multiplied by `factor`, or divided by it for an exponent, and clamped to
-// the allowed range, every default filled in; nullopt for models without one. The
-// roughness-mismatch negative control samples from it.
-std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor);
-
-// The material for the roughness-mismatch negative control: `factor` (> 1) times rougher, or
-// as much smoother when the roughness is at its range limit (where scaling up would change
-// nothing and the control would prove nothing); nullopt for models without a lobe width.
-std::optional<nlohmann::json> withMismatchedRoughness(const nlohmann::json& material, double factor);
-
-// True when a material argument is inline JSON rather than a file path.
-bool isInlineMaterial(std::string_view argument);
-
-// Parses a material argument: inline JSON when it starts with '{', a file path otherwise.
-// Throws MaterialError naming the file (not found, not readable) or the source and position
-// of a parse error. The result is not validated; makeBsdf/completeMaterial do that. From a
-// file, relative values of path parameters (a measured material's "file"), at any depth, are
-// made relative to the file's directory, so a material file and its data can move together.
-nlohmann::json loadMaterialArgument(const std::string& argument);
 
 }  // namespace scatterlab
