@@ -29,7 +29,8 @@ namespace {
 
 using nlohmann::json;
 
-// docs/validation.md's negative control: sample from a roughness 10% off the one pdf() uses.
+// The roughness-mismatch negative control (docs/validation.md, "Negative controls"): sample from a
+// roughness 10% off the one pdf() uses.
 constexpr double RoughnessMismatchFactor = 1.1;
 
 constexpr uint64_t MinSamples = 1000;

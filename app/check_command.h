@@ -1,4 +1,4 @@
-// `scatterlab check`: the statistical test kit (docs/validation.md sections 1-4) on materials given
+// `scatterlab check`: the statistical test kit (docs/validation.md sections 1-6) on materials given
 // as inline JSON or files, or on the built-in showcase. Prints each completed material and
 // the verdict table, or one JSON document with --json.
 #pragma once
@@ -36,8 +36,8 @@ int runCheckCommand(const CheckCommandOptions& options);
 // probe cells (64 and 32 x 32 by default). Shared with the lab report.
 SubsurfaceCheckOptions subsurfaceCheckOptions(const BsdfCheckOptions& kit);
 
-// The sampler of the roughness-mismatch negative control (docs/validation.md: a lobe width 10% off
-// the one pdf() uses), or null for a model without a lobe-width parameter.
+// The sampler of the roughness-mismatch negative control (docs/validation.md, "Negative controls": a lobe
+// width 10% off the one pdf() uses), or null for a model without a lobe-width parameter.
 std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const nlohmann::json& material);
 
 }  // namespace scatterlab

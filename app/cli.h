@@ -1,4 +1,5 @@
-// The `scatterlab` command line: one executable, one subcommand per task (docs/design.md).
+// The `scatterlab` command line: one executable, one subcommand per task (docs/design.md, "The command
+// line").
 #pragma once
 
 namespace scatterlab {

@@ -1,8 +1,8 @@
 // Rays and where a new ray may start on a surface without finding that surface again.
 //
-// Geometry is double precision throughout (docs/design.md: geometry that no parameter touches stays
-// in double): a unit sphere seen from 4 units away is intersected to ~1e-15, so a fixed
-// relative offset of 1e-9 along the normal clears the surface with six orders of magnitude to
+// Geometry is double precision throughout (docs/design.md, "Rules for kernel code": geometry
+// that no parameter touches stays in double): a unit sphere seen from 4 units away is intersected to ~1e-15,
+// so a fixed relative offset of 1e-9 along the normal clears the surface with six orders of magnitude to
 // spare, and is still far below anything visible (a pixel of the peers' scene is ~1e-2 wide).
 #pragma once
 

@@ -1,6 +1,6 @@
 // The built-in scenes.
 //
-// "sphere": the peers' material-sphere scene (peers/README.md, cycles_sphere.py): a unit sphere
+// "sphere": the peers' material-sphere scene (bench/cycles/README.md, cycles_sphere.py): a unit sphere
 // at the origin, a pinhole camera at (0, -4, 0) looking at it with +Z up and a 45 degree field
 // of view, the environment all around. Blender's UV sphere there is a mesh of 256 x 128
 // segments; here it is the exact sphere.

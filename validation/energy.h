@@ -28,7 +28,7 @@ struct EnergyResult {
   Rgb albedo{0.0};  // integral of f |cos wo| (quadrature) + delta lobes
 };
 
-// Tolerance of the normalisation check: 1e-3 (docs/validation.md), widened to 4 standard errors
+// Tolerance of the normalisation check: 1e-3 (docs/validation.md section 3), widened to 4 standard errors
 // of the estimated failure probability when that is the larger (binomial noise).
 double normalisationTolerance(double failureProbability, size_t samples);
 

@@ -1,7 +1,7 @@
 // The half-space random walk over many paths, on all cores: the ground truth that every
 // diffusion profile is measured against (docs/validation.md section 6). One path and the tally are
 // materials/bssrdf/half_space_walk.h; this is their parallel driver (TBB), kept out of the
-// materials library, which does no threading (docs/design.md).
+// materials library, which does no threading (docs/design.md, "Who may include whom").
 #pragma once
 
 #include <functional>

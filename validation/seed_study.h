@@ -1,9 +1,8 @@
-// The size of the chi-square test, measured (docs/validation.md section 1: "the suite also
-// reports how often a correct sampler fails over many seeds (should be ~alpha), rather than
-// picking lucky seeds"). One correct sampler is tested with many seeds at an unadjusted
-// significance alpha; the rejection rate must be Binomial(runs, alpha) and the p-values
-// uniform. A test whose rate is far above alpha rejects correct models (its expected counts
-// are wrong: quadrature, pooling, delta handling); far below, it has lost power.
+// The size of the chi-square test, measured (docs/validation.md section 1, "Size"): how often a
+// correct sampler fails over many seeds, instead of a lucky seed. One correct sampler is tested with many
+// seeds at an unadjusted significance alpha; the rejection rate must be Binomial(runs, alpha) and the
+// p-values uniform. A test whose rate is far above alpha rejects correct models (its expected counts are
+// wrong: quadrature, pooling, delta handling); far below, it has lost power.
 #pragma once
 
 #include <algorithm>

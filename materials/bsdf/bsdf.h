@@ -1,6 +1,6 @@
 // The BSDF interface every scatterlab model implements.
 //
-// Conventions (docs/design.md; every model, test and caller relies on them):
+// Conventions (docs/design.md, "Conventions"; every model, test and caller relies on them):
 //  - Models work in the local shading frame: z = shading normal, x = tangent (the
 //    anisotropy axis). `Bsdf` below owns the frame and converts world <-> local.
 //  - Both directions point away from the surface. `wi` is the given direction (toward the

@@ -9,7 +9,7 @@
 // (light beyond 203 mean free paths, < 1% only for rho -> 1, is not part of the model).
 // Between rows, Catmull-Rom weights on the rho nodes (as pbrt) combine whole rows.
 //
-// A table costs ~0.3 s of CPU (TBB over rows); tables are cached per (g, eta).
+// A table costs ~0.3 s of CPU (one thread: materials does no threading); tables are cached per (g, eta).
 #pragma once
 
 #include <array>

@@ -6,8 +6,8 @@
 //   R(r) = alpha'^2 / (4 pi) [ (C_E z_r (1 + sigma_tr d_r) / d_r^2 + C_phi / D) e^(-sigma_tr d_r) / d_r
 //                             - (the same with z_v, d_v) ],
 // C1, C2 the Fresnel moments of the boundary seen from inside (fresnel_moments.h, 1 / eta).
-// sigma_tr = sqrt(sigma_a / D) is used throughout (docs/references.md: one open-source copy mixes
-// it with Jensen's sqrt(3 sigma_a sigma_t')). Integrating diffusion_source.h's terms gives
+// sigma_tr = sqrt(sigma_a / D) is used throughout (docs/references.md, "The better dipole": one open-source
+// copy mixes it with Jensen's sqrt(3 sigma_a sigma_t')). Integrating diffusion_source.h's terms gives
 //   Rd = alpha'^2 / 2 [C_E (e^(-sigma_tr z_r) + e^(-sigma_tr |z_v|))
 //                      + (C_phi / D) e^(-sigma_tr z_r) (1 - e^(-sigma_tr 4 A D)) / sigma_tr],
 // which is 1 for alpha' = 1 (C_E + 2 A C_phi = 1): a medium that absorbs nothing reflects all.

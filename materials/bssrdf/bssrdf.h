@@ -1,6 +1,6 @@
 // Subsurface scattering: the radial-profile interface every diffusion model implements.
 //
-// Conventions (docs/design.md; every profile, sampler, test and the CLI rely on them):
+// Conventions (docs/design.md, "Conventions"; every profile, sampler, test and the CLI rely on them):
 //  - Lengths in mm, coefficients in mm^-1 (Jensen et al. 2001), per linear-RGB channel.
 //  - A medium (medium.h) is sigma_s, sigma_a, the Henyey-Greenstein g and eta, the index of
 //    refraction inside relative to outside. Reduced: sigma_s' = sigma_s (1 - g),

@@ -17,7 +17,7 @@
 // Path i draws from CounterRng(seed, i) and the tallies are integers, so the result is the
 // same for any number of threads. This file holds one path and the tally; the parallel driver
 // over many paths, simulateHalfSpace, is validation/half_space_reference.h (materials stays free
-// of threading, docs/design.md).
+// of threading, docs/design.md, "Who may include whom").
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Atomic file output (docs/design.md habits): write to a temporary name in the same directory,
+// Atomic file output (docs/design.md, "Atomic writes"): write to a temporary name in the same directory,
 // then rename over the target, so a crash or an error never leaves a half-written file.
 #pragma once
 

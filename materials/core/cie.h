@@ -1,5 +1,6 @@
 // CIE 1931 2-degree colour matching functions and the conversion from XYZ to linear RGB with
-// Rec.709 primaries (scatterlab's colour space, docs/design.md): what turns a spectrum into RGB.
+// Rec.709 primaries (scatterlab's colour space, docs/design.md, "Units and colour"): what turns a spectrum
+// into RGB.
 #pragma once
 
 #include "materials/core/math.h"

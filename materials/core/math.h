@@ -19,7 +19,7 @@ template <typename T> using Vec2 = glm::vec<2, T, glm::defaultp>;
 template <typename T> using Vec3 = glm::vec<3, T, glm::defaultp>;
 using Vec2d = Vec2<double>;
 using Vec3d = Vec3<double>;
-// Linear RGB, Rec.709 primaries (docs/design.md conventions).
+// Linear RGB, Rec.709 primaries (docs/design.md, "Units and colour").
 template <typename T> using RgbT = Vec3<T>;
 using Rgb = RgbT<double>;
 

@@ -75,6 +75,28 @@ TEST(Cli, ModelsJsonParses) {
   EXPECT_TRUE(types.contains("conductor"));
 }
 
+// The page docs/models.md is: a heading and a parameter table per model of the JSON catalogue
+// (tests/CMakeLists.txt's docs.models compares it with the committed page).
+TEST(Cli, ModelsMarkdownHasASectionPerModel) {
+  const ProcessResult run = runScatterlab({"models", "--markdown"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  EXPECT_EQ(run.out.rfind("# Material models\n", 0), 0u) << run.out.substr(0, 200);
+  const json catalog = json::parse(runScatterlab({"models", "--json"}).out);
+  for (const json& model : catalog) {
+    const std::string heading = "\n## `" + model.at("type").get<std::string>() + "`\n";
+    EXPECT_NE(run.out.find(heading), std::string::npos) << heading;
+  }
+  EXPECT_NE(run.out.find("| `alpha` | pair | a number or [alpha_x, alpha_y], each in [0.001, 1] | `0.1` |"),
+            std::string::npos);
+  EXPECT_NE(run.out.find("give at most one of `metal`, or `eta` + `k`"), std::string::npos);
+}
+
+TEST(Cli, ModelsMarkdownAndJsonExcludeEachOther) {
+  const ProcessResult run = runScatterlab({"models", "--markdown", "--json"});
+  EXPECT_EQ(run.exitCode, 2) << describe(run);
+  EXPECT_TRUE(run.out.empty()) << describe(run);
+}
+
 // ---- Bad input: exit 2, one message naming key or option, value and what is allowed,
 // ---- and no output directory ---------------------------------------------------------------
 

@@ -1,5 +1,5 @@
-// The error metrics (docs/references.md): each residual against the formula written out, the
-// merged orderings of the linear metrics, and the names.
+// The error metrics (docs/references.md, "Ngan et al. 2005 models and fitting metrics"): each residual
+// against the formula written out, the merged orderings of the linear metrics, and the names.
 #include <gtest/gtest.h>
 
 #include "fitting/least_squares.h"
@@ -25,7 +25,8 @@ double metricSum(Metric metric, double albedo) {
   return problem.cost(x.data());
 }
 
-// The same sum written out from docs/references.md over both orderings of the pair, weight 1/2 each.
+// The same sum written out from docs/references.md, "Ngan et al. 2005 models and fitting metrics",
+// over both orderings of the pair, weight 1/2 each.
 double expectedSum(Metric metric, double albedo) {
   const double ci = std::cos(radians(30.0)), co = std::cos(radians(60.0));
   const double si = std::sin(radians(30.0)), so = std::sin(radians(60.0));

@@ -1,6 +1,6 @@
 // The one-dimensional problem of the BSSRDF profiles, with a profile defined here: Christensen
 // & Burley 2015's normalised diffusion R(r) = A (e^(-r/d) + e^(-r/(3d))) / (8 pi d r)
-// (docs/references.md), whose integral of 2 pi r R over r is A.
+// (docs/references.md, "Normalised diffusion (Burley)"), whose integral of 2 pi r R over r is A.
 #include <gtest/gtest.h>
 
 #include <ceres/autodiff_cost_function.h>

@@ -1,4 +1,4 @@
-// Same seed, same numbers, for any thread count (docs/design.md habits).
+// Same seed, same numbers, for any thread count (docs/design.md, "Seeds and determinism").
 #include <gtest/gtest.h>
 
 #include <tbb/task_arena.h>

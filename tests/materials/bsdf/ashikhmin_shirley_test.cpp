@@ -114,7 +114,7 @@ TEST_P(AshikhminShirleyKit, PassesEveryCheck) {
 INSTANTIATE_TEST_SUITE_P(Grid, AshikhminShirleyKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<AsCase>& info) { return name(info.param); });
 
-// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1).
+// The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls").
 struct ControlCase {
   const char* name;
   nlohmann::json material;

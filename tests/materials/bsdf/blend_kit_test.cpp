@@ -78,8 +78,8 @@ TEST(BlendKitSmoke, LosslessPairPassesTheFurnace) {
 }
 [[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
-// The kit must reject deliberately broken samplers of blends (docs/validation.md section 1). A blend
-// has no single lobe width, so the roughness-mismatch control reports "not applicable".
+// The kit must reject deliberately broken samplers of blends (docs/validation.md, "Negative controls"). A
+// blend has no single lobe width, so the roughness-mismatch control reports "not applicable".
 struct ControlCase {
   const char* name;
   json material;

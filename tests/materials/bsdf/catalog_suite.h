@@ -1,4 +1,4 @@
-// The catalog's chi-square suite (docs/validation.md section 1). Every kit test of a
+// The catalog's chi-square suite (docs/validation.md, "The Sidak correction"). Every kit test of a
 // correct sampler in materials_tests belongs to ONE suite with ONE Sidak correction: each
 // test file registers how many chi-square tests its grid runs (a namespace-scope
 // initialiser, so the total is known before any test starts), and every kit run uses the

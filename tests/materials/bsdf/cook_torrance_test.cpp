@@ -81,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Grid, NganCookTorranceKit, ::testing::ValuesIn(grid()),
                            return name(info.param);
                          });
 
-// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1).
+// The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls").
 struct ControlCase {
   const char* name;
   nlohmann::json material;

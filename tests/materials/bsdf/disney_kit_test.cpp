@@ -103,7 +103,7 @@ TEST(DisneyKitEnergy, WhiteRoughBaseFailsOnlyTheAlbedoRow) {
   EXPECT_EQ(albedoRows, int(WhiteRoughAngles.size()));
 }
 
-// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1):
+// The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls"):
 // a metal whose samples come from the GGX and GTR1 lobes, and a mixture of all three samplers
 // near grazing incidence.
 struct ControlCase {

@@ -1,5 +1,5 @@
-// The rough dielectric's single-scattering energy (docs/validation.md section 3: "models that lose
-// energy say how much"). Light that scatters more than once among the microfacets is not in
+// The rough dielectric's single-scattering energy (docs/validation.md section 3: a lossy
+// model says how much it loses). Light that scatters more than once among the microfacets is not in
 // the model, so the directional albedo E = E_R + E_T (importance transport: power) falls
 // below 1 as alpha grows, from outside and inside, and isLossless() is false. Energy
 // compensation (Kulla & Conty 2017) is the "multiscatter": "kulla-conty" option

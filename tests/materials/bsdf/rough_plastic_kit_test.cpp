@@ -77,7 +77,7 @@ TEST(RoughPlasticKitSmoke, ColouredGgxPassesAt85Degrees) {
 }
 [[maybe_unused]] const int RegisteredSmoke = catalog_suite::registerChiSquareTests(1);
 
-// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1).
+// The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls").
 struct ControlCase {
   const char* name;
   nlohmann::json material;

@@ -76,7 +76,7 @@ TEST(DiffuseFresnel, TransmittancesFromTheTwoSidesObeyTheEtendueIdentity) {
   }
 }
 
-// Egan & Hilgeman's fit (docs/references.md, as Jensen et al. 2001 use it for the internal
+// Egan & Hilgeman's fit (docs/references.md, "Fresnel"; as Jensen et al. 2001 use it for the internal
 // reflectance) agrees to its accuracy: 0.52% at eta 1.1, less above.
 TEST(DiffuseFresnel, InternalReflectanceAgreesWithEganHilgemansFit) {
   for (double eta : {1.1, 1.3, 1.5, 2.0, 2.4}) {

@@ -134,7 +134,7 @@ TEST_P(WardKit, PassesEveryCheck) {
 INSTANTIATE_TEST_SUITE_P(Grid, WardKit, ::testing::ValuesIn(grid()),
                          [](const ::testing::TestParamInfo<WardCase>& info) { return name(info.param); });
 
-// The kit must reject deliberately broken samplers of this model (docs/validation.md section 1).
+// The kit must reject deliberately broken samplers of this model (docs/validation.md, "Negative controls").
 struct ControlCase {
   const char* name;
   nlohmann::json material;

@@ -30,7 +30,8 @@ class ProfileEnergy : public testing::TestWithParam<ProfileCase> {
   }
 };
 
-// Quadrature error is ~1e-9 relative; the closed forms are exact: 1e-4 (docs/validation.md) is loose.
+// Quadrature error is ~1e-9 relative; the closed forms are exact: 1e-4 (docs/validation.md section 6) is
+// loose.
 TEST_P(ProfileEnergy, IntegralOfTheProfileEqualsItsClosedForm) {
   const auto p = profile();
   const Rgb total = p->totalReflectance();
