@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include "fitting/brdf_fit.h"
 #include "fitting/material_writer.h"
 #include "materials/core/atomic_file.h"
+#include "materials/measured/measured_file.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/rgl_brdf.h"
@@ -35,10 +37,6 @@ std::string format(const char* pattern, double value) {
   char text[64];
   std::snprintf(text, sizeof text, pattern, value);
   return text;
-}
-
-bool isMaterialData(const std::string& data) {
-  return isInlineMaterial(data) || (data.size() > 5 && data.substr(data.size() - 5) == ".json");
 }
 
 struct LoadedData {
@@ -70,12 +68,13 @@ LoadedData loadRgl(const std::string& data) {
 }
 
 // A material tabulated in the MERL layout (no perturbation), a MERL file, or an RGL file (told
-// apart by content); its usable cells.
+// apart by content, whatever the name: materials/measured/measured_file.h); its usable cells.
 LoadedData loadData(const std::string& data, int threads, ProgressLine& progress) {
-  if (!isMaterialData(data) && isTensorFile(data)) return loadRgl(data);
+  const std::optional<MeasuredFormat> format = isInlineMaterial(data) ? std::nullopt : measuredFormatOf(data);
+  if (format == MeasuredFormat::Rgl) return loadRgl(data);
   LoadedData loaded;
   MerlTable table;
-  if (isMaterialData(data)) {
+  if (!format) {
     const json material = loadMaterialArgument(data);
     std::unique_ptr<BsdfModel> model;
     try {

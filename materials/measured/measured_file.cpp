@@ -11,7 +11,9 @@ namespace scatterlab {
 
 namespace {
 
-std::unique_ptr<BsdfModel> buildMeasured(const MaterialParameters& p) { return readMeasuredFile(p.path("file")); }
+std::unique_ptr<BsdfModel> buildMeasured(const MaterialParameters& p) {
+  return readMeasuredFile(p.path("file"));
+}
 
 }  // namespace
 

@@ -1,13 +1,16 @@
 // Measured files as MATERIAL, end to end: a bare path of an RGL file or a MERL table (told apart
 // by content, materials/measured/measured_file.h) is `{"type": "measured", "file": PATH}` for
-// check, render and lab. The real RGL file passes the whole kit with the negative controls
-// rejected (docs/references.md, "RGL measured BRDFs"), and the lab report fits it with every
-// family and grades each honestly.
+// check and render, and synth and fit tell their DATA apart the same way. The real RGL file
+// passes the whole kit with the negative controls rejected (docs/references.md, "RGL measured
+// BRDFs").
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -60,8 +63,8 @@ TEST(MeasuredCli, RenderTakesABarePathOfEitherFormat) {
   }
   for (const fs::path& file : {Felt, table}) {
     const fs::path prefix = uniquePath("measured-render");
-    const ProcessResult run =
-        runScatterlab({"render", file.string(), "--res", "16", "--spp", "4", "--out", prefix.string(), "--json"});
+    const ProcessResult run = runScatterlab(
+        {"render", file.string(), "--res", "16", "--spp", "4", "--out", prefix.string(), "--json"});
     ASSERT_EQ(run.exitCode, 0) << describe(run);
     const json out = json::parse(run.out);
     EXPECT_EQ(out.at("renders").at(0).at("material"), (json{{"type", "measured"}, {"file", file.string()}}))
@@ -71,3 +74,30 @@ TEST(MeasuredCli, RenderTakesABarePathOfEitherFormat) {
   }
   fs::remove(table);
 }
+
+// Synth and fit take bare paths too, whatever their names say: an RGL file copied to a name
+// without its extension is tabulated by synth and fitted on its own pairs, the table synth
+// writes (named ".dat") is fitted as a MERL table, and a JSON material named ".txt" is a material.
+TEST(MeasuredCli, SynthAndFitTellBarePathsByContent) {
+  const fs::path rgl = uniquePath("felt-copy") += ".data";
+  fs::copy_file(Felt, rgl);
+  const fs::path table = uniquePath("felt-table") += ".dat";
+  const ProcessResult synth = runScatterlab({"synth", rgl.string(), "--out", table.string()});
+  ASSERT_EQ(synth.exitCode, 0) << describe(synth);
+  const fs::path material = uniquePath("lambert-material") += ".txt";
+  std::ofstream(material) << R"({"type": "lambertian", "albedo": 0.5})";
+  const std::vector<std::pair<fs::path, std::string>> cases{
+      {rgl, "rgl"}, {table, "merl"}, {material, "material"}};
+  for (const auto& [file, kind] : cases) {
+    const ProcessResult fit = runScatterlab({"fit", file.string(), "--model", "lambertian", "--samples",
+                                             "2000", "--grid-points", "8", "--starts", "1", "--json"});
+    ASSERT_LE(fit.exitCode, 1) << describe(fit);  // exit 1: a poor fit, an honest outcome
+    EXPECT_EQ(json::parse(fit.out).at("data").at("kind"), kind) << file;
+  }
+  fs::remove(rgl);
+  fs::remove(table);
+  fs::remove(material);
+}
+
+}  // namespace
+}  // namespace scatterlab

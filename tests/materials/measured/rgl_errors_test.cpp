@@ -7,9 +7,9 @@
 #include <fstream>
 #include <limits>
 
-#include "materials/registry/spec_validation.h"
 #include "materials/measured/rgl_brdf.h"
 #include "materials/measured/rgl_synthesis.h"
+#include "materials/registry/spec_validation.h"
 #include "measured_test_support.h"
 
 namespace scatterlab {

@@ -7,9 +7,9 @@
 
 #include <cstdio>
 
-#include "materials/registry/spec_validation.h"
 #include "materials/measured/rgl_brdf.h"
 #include "materials/measured/rgl_synthesis.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/negative_controls.h"
 

@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "materials/bsdf/metal_reduction.h"
-#include "materials/registry/spec_validation.h"
 #include "materials/measured/rgl_brdf.h"
 #include "materials/measured/rgl_synthesis.h"
+#include "materials/registry/spec_validation.h"
 #include "measured_test_support.h"
 
 namespace scatterlab {
