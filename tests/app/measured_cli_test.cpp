@@ -89,8 +89,9 @@ TEST(MeasuredCli, SynthAndFitTellBarePathsByContent) {
   const std::vector<std::pair<fs::path, std::string>> cases{
       {rgl, "rgl"}, {table, "merl"}, {material, "material"}};
   for (const auto& [file, kind] : cases) {
-    const ProcessResult fit = runScatterlab({"fit", file.string(), "--model", "lambertian", "--samples",
-                                             "2000", "--grid-points", "8", "--starts", "1", "--json"});
+    const ProcessResult fit =
+        runScatterlab({"fit", file.string(), "--model", "lambertian", "--metric", "ngan", "--samples", "2000",
+                       "--grid-points", "8", "--starts", "1", "--json"});
     ASSERT_LE(fit.exitCode, 1) << describe(fit);  // exit 1: a poor fit, an honest outcome
     EXPECT_EQ(json::parse(fit.out).at("data").at("kind"), kind) << file;
   }
