@@ -79,14 +79,21 @@ MaterialToRender loadMaterial(const std::string& argument) {
 }
 
 struct LoadedEnvironment {
-  Environment environment;
+  std::optional<Environment> environment;  // none: a black background
   json description;
 };
 
-LoadedEnvironment loadEnvironment(const RenderCommandOptions& options) {
+// --env, or the scene's own: white for the sphere and preview scenes, none for the caustic.
+std::string environmentChoice(const RenderCommandOptions& options, ScenePreset preset) {
+  if (!options.env.empty()) return options.env;
+  return preset == ScenePreset::Caustic ? "none" : "white";
+}
+
+LoadedEnvironment loadEnvironment(const RenderCommandOptions& options, ScenePreset preset) {
   const Transform rotation = Transform::rotate(options.envRotateDegrees, Vec3d(0, 0, 1));
-  if (options.env == "white")
-    return {Environment::constant(Rgb(options.envStrength)), {{"type", "constant"}}};
+  const std::string env = environmentChoice(options, preset);
+  if (env == "none") return {std::nullopt, {{"type", "none"}}};
+  if (env == "white") return {Environment::constant(Rgb(options.envStrength)), {{"type", "constant"}}};
   try {
     EnvironmentMapFile file = readEnvironmentMap(options.env);
     const json description{{"type", "map"},
@@ -98,6 +105,54 @@ LoadedEnvironment loadEnvironment(const RenderCommandOptions& options) {
   } catch (const RenderInputError& error) {
     throw InputError(std::string("--env: ") + error.what());
   }
+}
+
+// The scene's lighting from --env and the --light options, which only the preview and caustic
+// scenes (the ones with an area light) take.
+PresetLighting lightingOf(const RenderCommandOptions& options, ScenePreset preset,
+                          std::optional<Environment> environment) {
+  PresetLighting lighting = presetLighting(preset, std::move(environment));
+  const bool lightOptions = !options.lightPosition.empty() || options.lightRadius > 0 ||
+                            options.lightStrength > 0 || options.noLight;
+  if (!lighting.light) {
+    if (lightOptions)
+      throw InputError(
+          "--light-position, --light-radius, --light-strength, --no-light: the sphere scene has no area "
+          "light; allowed: with --scene preview or caustic");
+    return lighting;
+  }
+  if (options.noLight) {
+    if (!options.lightPosition.empty() || options.lightRadius > 0 || options.lightStrength > 0)
+      throw InputError(
+          "--no-light: removes the light; allowed: without --light-position, --light-radius, "
+          "--light-strength");
+    lighting.light.reset();
+    return lighting;
+  }
+  if (!options.lightPosition.empty())
+    lighting.light->position =
+        Vec3d(options.lightPosition[0], options.lightPosition[1], options.lightPosition[2]);
+  if (options.lightRadius > 0) lighting.light->radius = options.lightRadius;
+  if (options.lightStrength > 0) lighting.light->radiance *= options.lightStrength;
+  // The light must not swallow the sphere or sit in the ground.
+  const Sphere sphere = presetSphere();
+  const PresetLight& light = *lighting.light;
+  if (glm::length(light.position - sphere.center) < light.radius + sphere.radius ||
+      light.position.z - light.radius <= -MaterialSphereSetup::SphereRadius)
+    throw InputError("--light-position, --light-radius: a light of radius " + std::to_string(light.radius) +
+                     " at (" + std::to_string(light.position.x) + ", " + std::to_string(light.position.y) +
+                     ", " + std::to_string(light.position.z) +
+                     ") meets the sphere or the ground; allowed: a light clear of the unit sphere at the "
+                     "origin and above the ground z = -1");
+  return lighting;
+}
+
+json lightJson(const PresetLighting& lighting) {
+  if (!lighting.light) return nullptr;
+  const PresetLight& l = *lighting.light;
+  return {{"position", {l.position.x, l.position.y, l.position.z}},
+          {"radius", l.radius},
+          {"radiance", {l.radiance.x, l.radiance.y, l.radiance.z}}};
 }
 
 Estimator estimatorOf(const std::string& name) {
@@ -180,17 +235,48 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
                    "several: a gallery")
       ->required();
   command
+      ->add_option("--integrator", options.integrator,
+                   "Estimator: path (path tracing, NEE + MIS), light (light tracing: particles from the "
+                   "lights to the eye), bdpt (bidirectional, every strategy under MIS) or sppm (stochastic "
+                   "progressive photon mapping: --spp iterations); subsurface materials: path only")
+      ->check(choiceOf(integratorNames(), "an integrator"))
+      ->capture_default_str();
+  command
       ->add_option("--scene", options.scene,
-                   "Built-in scene: sphere (the peers' material sphere) or preview "
-                   "(on a checkered ground)")
+                   "Built-in scene: sphere (the peers' material sphere), preview (on a checkered ground, "
+                   "with a small sphere light) or caustic (on a grey ground, lit by that light alone)")
       ->check(choiceOf(scenePresetNames(), "a scene"))
       ->capture_default_str();
   command
-      ->add_option("--env", options.env,
-                   "Environment: white (constant radiance 1, the furnace) or an equirectangular OpenEXR map "
-                   "(width = 2 x height; column u looks along phi = pi - 2 pi u, as Cycles)")
-      ->type_name("FILE|white")
-      ->capture_default_str();
+      ->add_option(
+          "--env", options.env,
+          "Environment: white (constant radiance 1, the furnace), none (black) or an equirectangular "
+          "OpenEXR map (width = 2 x height; column u looks along phi = pi - 2 pi u, as Cycles); "
+          "default: white, none for --scene caustic")
+      ->type_name("FILE|white|none");
+  const PresetLight light;
+  command
+      ->add_option("--light-position", options.lightPosition,
+                   "Preview and caustic scenes: move the sphere light to X,Y,Z (default " +
+                       std::to_string(light.position.x) + "," + std::to_string(light.position.y) + "," +
+                       std::to_string(light.position.z) + ")")
+      ->delimiter(',')
+      ->expected(3)
+      ->type_name("X,Y,Z")
+      ->check(numberIn(ValueRange::closed(-1e3, 1e3), "a coordinate"));
+  command
+      ->add_option("--light-radius", options.lightRadius,
+                   "Preview and caustic scenes: the sphere light's radius (default " +
+                       std::to_string(light.radius) + ")")
+      ->type_name("R")
+      ->check(numberIn(ValueRange{1e-4, 1e3, false, false}, "a radius"));
+  command
+      ->add_option("--light-strength", options.lightStrength,
+                   "Preview and caustic scenes: scale the sphere light's radiance (default radiance " +
+                       std::to_string(light.radiance.x) + ")")
+      ->type_name("S")
+      ->check(numberIn(ValueRange{0.0, 1e6, true, false}, "a strength"));
+  command->add_flag("--no-light", options.noLight, "Preview and caustic scenes: remove the sphere light");
   command->add_option("--env-strength", options.envStrength, "Environment radiance scale")
       ->type_name("S")
       ->check(numberIn(ValueRange::closed(0.0, 1e6)))
@@ -224,10 +310,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->capture_default_str();
   command
       ->add_option("--estimator", options.estimator,
-                   "mis (NEE + BSDF sampling, power heuristic), bsdf (BSDF sampling only) or light (light "
-                   "sampling only for direct light): for checking that they agree")
-      ->check(choiceOf({"mis", "bsdf", "light"}, "an estimator"))
-      ->capture_default_str();
+                   "The path tracer's direct light: mis (NEE + BSDF sampling, power heuristic; the default), "
+                   "bsdf (BSDF sampling only) or light (light sampling only): for checking that they agree")
+      ->check(choiceOf({"mis", "bsdf", "light"}, "an estimator"));
   command
       ->add_option(
           "--subsurface", options.subsurface,
@@ -235,6 +320,15 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
           "walk (brute-force volumetric random walk inside the sphere, the reference)")
       ->check(choiceOf(subsurfaceModeNames(), "a subsurface mode"))
       ->capture_default_str();
+  command->add_option("--photons", options.photons, "SPPM: photons per iteration (default: one per pixel)")
+      ->type_name("N")
+      ->transform(integerIn(1, uint64_t(1) << 32));
+  command
+      ->add_option("--sppm-radius", options.sppmRadius,
+                   "SPPM: the initial gather radius in pixel footprints at the scene's centre (default " +
+                       std::to_string(SppmSettings{}.initialRadiusPixels) + ")")
+      ->type_name("PIXELS")
+      ->check(numberIn(ValueRange{1e-3, 1e3, false, false}, "a radius"));
   command
       ->add_option("--filter", options.filter,
                    "Pixel filter: box (1 pixel) or gaussian (sigma 0.5, radius 1.5 px)")
@@ -246,7 +340,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       ->capture_default_str();
   command
       ->add_option("--layers", options.layers,
-                   "Extra EXR layers: albedo, normal, variance (single material only)")
+                   "Extra EXR layers: albedo, normal, variance (single material only; sppm has no variance)")
       ->delimiter(',')
       ->check(choiceOf({"albedo", "normal", "variance"}, "a layer"));
   command->add_option("--label", options.labels,
@@ -270,6 +364,16 @@ int runRenderCommand(const RenderCommandOptions& options) {
     throw InputError("--res: " + inQuotes(options.resolution) +
                      " is not valid; allowed: " + ResolutionAllowed);
   const ScenePreset preset = *findScenePreset(options.scene);
+  const IntegratorKind integrator = *findIntegrator(options.integrator);
+  if (integrator != IntegratorKind::Path && !options.estimator.empty())
+    throw InputError("--estimator: chooses the path tracer's direct light; allowed: with --integrator path");
+  if (integrator != IntegratorKind::Sppm && (options.photons > 0 || options.sppmRadius > 0))
+    throw InputError("--photons, --sppm-radius: photon mapping's settings; allowed: with --integrator sppm");
+  if (integrator == IntegratorKind::Sppm &&
+      std::find(options.layers.begin(), options.layers.end(), "variance") != options.layers.end())
+    throw InputError(
+        "--layers: \"variance\": sppm has no variance layer (it is consistent, not unbiased: its "
+        "error is no sample variance); allowed: albedo, normal");
   const bool gallery = options.materials.size() > 1;
   if (!options.labels.empty() && options.labels.size() != options.materials.size())
     throw InputError("--label: " + std::to_string(options.labels.size()) + " labels for " +
@@ -281,14 +385,21 @@ int runRenderCommand(const RenderCommandOptions& options) {
   for (size_t i = 0; i < options.materials.size(); ++i) {
     materials.push_back(loadMaterial(options.materials[i]));
     if (!options.labels.empty()) materials.back().label = options.labels[i];
+    if (integrator != IntegratorKind::Path && materials.back().material.subsurface)
+      throw InputError("material " + inQuotes(options.materials[i]) +
+                       ": a subsurface material (a BSSRDF), which --integrator " + options.integrator +
+                       " does not render; allowed: --integrator path, or a BSDF");
   }
-  const LoadedEnvironment loaded = loadEnvironment(options);
-  const Environment& environment = loaded.environment;
+  LoadedEnvironment loaded = loadEnvironment(options, preset);
+  const PresetLighting lighting = lightingOf(options, preset, std::move(loaded.environment));
   const OutputPaths paths = checkOutput(options.out);
 
   const SubsurfaceMode subsurfaceMode = *findSubsurfaceMode(options.subsurface);
 
   RenderSettings settings;
+  settings.integratorKind = integrator;
+  if (options.photons > 0) settings.sppm.photonsPerIteration = options.photons;
+  if (options.sppmRadius > 0) settings.sppm.initialRadiusPixels = options.sppmRadius;
   settings.samplesPerPixel = options.spp;
   settings.seed = options.seed;
   settings.threads = options.threads;
@@ -308,7 +419,7 @@ int runRenderCommand(const RenderCommandOptions& options) {
     ProgressLine progress;
     for (size_t i = 0; i < materials.size(); ++i) {
       MaterialToRender& material = materials[i];
-      const Scene scene = makeMaterialScene(preset, std::move(material.material), subsurfaceMode, environment,
+      const Scene scene = makeMaterialScene(preset, std::move(material.material), subsurfaceMode, lighting,
                                             resolution->width, resolution->height);
       const std::string step =
           gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
@@ -353,9 +464,11 @@ int runRenderCommand(const RenderCommandOptions& options) {
   }
 
   if (options.json) {
-    std::cout << json{{"scene", options.scene},
-                      {"env", options.env},
+    std::cout << json{{"integrator", options.integrator},
+                      {"scene", options.scene},
+                      {"env", environmentChoice(options, preset)},
                       {"environment", loaded.description},
+                      {"light", lightJson(lighting)},
                       {"env_strength", options.envStrength},
                       {"env_rotate_degrees", options.envRotateDegrees},
                       {"res", {resolution->width, resolution->height}},
@@ -363,7 +476,9 @@ int runRenderCommand(const RenderCommandOptions& options) {
                       {"threads", options.threads},
                       {"seed", options.seed},
                       {"max_depth", options.maxDepth},
-                      {"estimator", options.estimator},
+                      {"estimator", integrator == IntegratorKind::Path
+                                        ? json(options.estimator.empty() ? "mis" : options.estimator)
+                                        : json(nullptr)},
                       {"subsurface", options.subsurface},
                       {"filter", options.filter},
                       {"exr", paths.exr.string()},
@@ -375,7 +490,8 @@ int runRenderCommand(const RenderCommandOptions& options) {
   }
   for (const json& run : runs) {
     std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height
-              << ", " << options.spp << " spp, " << run["seconds"].get<double>() << " s, "
+              << ", " << options.spp << (integrator == IntegratorKind::Sppm ? " iterations, " : " spp, ")
+              << options.integrator << ", " << run["seconds"].get<double>() << " s, "
               << run["vertices_per_second"].get<double>() / 1e6 << " M path vertices/s";
     if (run.contains("sphere"))
       std::cout << ", sphere mean " << run["sphere"]["mean"].get<double>() << ", background mean "

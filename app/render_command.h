@@ -1,4 +1,5 @@
-// `scatterlab render`: path-traced material spheres (integrator/). One material gives
+// `scatterlab render`: material spheres rendered by one of the renderer's estimators
+// (integrator/render.h: path tracing, light tracing, BDPT, SPPM). One material gives
 // PREFIX.exr (linear float RGB, optional albedo / normal / variance layers) and PREFIX.png
 // (sRGB, exposure); several give a gallery: one labelled contact sheet as PREFIX.exr and
 // PREFIX.png. Every input is validated before any rendering, and nothing is written unless
@@ -11,12 +12,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "integrator/render.h"
+#include "integrator/scene_presets.h"
+
 namespace scatterlab {
 
 struct RenderCommandOptions {
   std::vector<std::string> materials;  // inline JSON or files; two or more: a gallery
+  std::string integrator = "path";
   std::string scene = "sphere";
-  std::string env = "white";
+  std::string env;  // empty: the scene's own (white for sphere and preview, none for caustic)
   double envStrength = 1.0;
   double envRotateDegrees = 0.0;
   int spp = 64;
@@ -24,7 +29,16 @@ struct RenderCommandOptions {
   int threads = 0;
   uint64_t seed = 1;
   int maxDepth = 12;
-  std::string estimator = "mis";
+  std::string estimator;  // empty: mis (the path tracer's only)
+  // The preview and caustic scenes' area light (integrator/scene_presets.h); 0 or empty: the
+  // default.
+  std::vector<double> lightPosition;
+  double lightRadius = 0.0;
+  double lightStrength = 0.0;  // times the default radiance
+  bool noLight = false;
+  // SPPM only; 0: the default (one photon per pixel; SppmSettings' radius).
+  int64_t photons = 0;
+  double sppmRadius = 0.0;
   std::string subsurface = "diffusion";  // diffusion or walk (integrator/subsurface.h)
   std::string filter = "box";
   double exposure = 0.0;

@@ -60,6 +60,7 @@ Environment Environment::fromMap(Image image, double strength, const Transform& 
   }
   map->distribution = PiecewiseConstant2D(weights, size_t(height), size_t(width));
   map->black = !(map->distribution.total() > 0) || strength == 0;
+  map->luminanceIntegral = map->distribution.total() * strength;
   map->texels.resize(size_t(width) * height * 4);
   for (int r = 0; r < height; ++r) {
     const double solidAngle = (2.0 * Pi / width) * (map->rowCos[r] - map->rowCos[r + 1]);
@@ -146,5 +147,9 @@ std::optional<EnvironmentSample> Environment::sample(const Vec2d& u) const {
 }
 
 double Environment::pdf(const Vec3d& direction) const { return evalWithPdf(direction).pdf; }
+
+double Environment::luminanceIntegral() const {
+  return map_ ? map_->luminanceIntegral : 4.0 * Pi * luminance(constant_);
+}
 
 }  // namespace scatterlab

@@ -73,6 +73,9 @@ class Environment {
 
   // False for a constant environment.
   bool hasMap() const { return bool(map_); }
+  // The luminance integrated over the sphere of directions, sr: how much light the environment
+  // sends (light paths choose among lights by it).
+  double luminanceIntegral() const;
 
  private:
   struct Map {
@@ -82,6 +85,7 @@ class Environment {
     PiecewiseConstant2D distribution;  // rows x columns of the image
     std::vector<double> rowCos;        // cos theta at the H + 1 row edges
     bool black = true;                 // nothing to sample
+    double luminanceIntegral = 0.0;    // of the cell weights: luminance times solid angle, summed
 
     const float* texel(int x, int y) const { return texels.data() + (size_t(y) * width + x) * 4; }
   };

@@ -19,6 +19,7 @@ struct LightSample {
   Rgb radiance;     // arriving along -direction; for a delta light, the irradiance it gives
   double pdf;       // per unit solid angle; for a delta light, 1
   bool isDelta = false;
+  int light = -1;  // which light of the set Scene::sampleLight chose from (Scene::lights)
 };
 
 // A sphere emitting `radiance` uniformly from its outside (one-sided: nothing toward its

@@ -20,16 +20,16 @@ RenderableMaterial makeRenderableMaterial(const nlohmann::json& material) {
 }
 
 Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode,
-                        Environment environment, int width, int height) {
+                        PresetLighting lighting, int width, int height) {
   if (material.subsurface)
-    return makePresetScene(preset, *material.subsurface, mode, std::move(environment), width, height);
-  return makePresetScene(preset, std::move(material.bsdf), std::move(environment), width, height);
+    return makePresetScene(preset, *material.subsurface, mode, std::move(lighting), width, height);
+  return makePresetScene(preset, std::move(material.bsdf), std::move(lighting), width, height);
 }
 
 Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment,
                         int width, int height) {
   return makeMaterialScene(preset, makeRenderableMaterial(material), SubsurfaceMode::Diffusion,
-                           std::move(environment), width, height);
+                           presetLighting(preset, std::move(environment)), width, height);
 }
 
 }  // namespace scatterlab

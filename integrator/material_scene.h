@@ -33,11 +33,13 @@ struct RenderableMaterial {
 // message naming the key and what is allowed.
 RenderableMaterial makeRenderableMaterial(const nlohmann::json& material);
 
-// The preset scene with the material on its sphere; a subsurface material is rendered in `mode`.
+// The preset scene with the material on its sphere, lit by `lighting`; a subsurface material is
+// rendered in `mode`.
 Scene makeMaterialScene(ScenePreset preset, RenderableMaterial material, SubsurfaceMode mode,
-                        Environment environment, int width, int height);
+                        PresetLighting lighting, int width, int height);
 
-// makeRenderableMaterial, then the preset scene (subsurface materials in the diffusion mode).
+// makeRenderableMaterial, then the preset scene in its own lighting around `environment`
+// (presetLighting; subsurface materials in the diffusion mode).
 Scene makeMaterialScene(ScenePreset preset, const nlohmann::json& material, Environment environment,
                         int width, int height);
 

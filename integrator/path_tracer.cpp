@@ -10,8 +10,10 @@ namespace {
 // that the light's own surface does not count as an occluder; far above double round-off.
 constexpr double ShadowRayShortening = 1e-7;
 
-// Next-event estimation at one vertex: one light sample, its contribution f L |cos| / pdf,
-// weighted against BSDF sampling by the power heuristic (Mis) or in full (LightOnly).
+constexpr LobeFlags NonDelta = LobeFlags::Diffuse | LobeFlags::Glossy;
+
+}  // namespace
+
 Rgb directLighting(const Scene& scene, const SurfaceInteraction& hit, const Bsdf& bsdf, const Vec3d& wi,
                    SampleStream& random, Estimator estimator, LightSet lightSet) {
   const double uSelect = random.next();
@@ -36,10 +38,6 @@ Rgb directLighting(const Scene& scene, const SurfaceInteraction& hit, const Bsdf
   return f * light->radiance * (cosine * weight / light->pdf);
 }
 
-constexpr LobeFlags NonDelta = LobeFlags::Diffuse | LobeFlags::Glossy;
-
-}  // namespace
-
 PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random,
                      const IntegratorSettings& settings) {
   PathSample out;
@@ -61,8 +59,27 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
     if (estimator == Estimator::LightOnly) return 0.0;
     return powerHeuristic(bsdfPdf, lightPdf);
   };
+  // Scattering at a vertex reached from the side of wi: next-event estimation where the BSDF
+  // has a lobe a light sample can meet, then one BSDF sample for the next direction.
+  const auto scatter = [&](const SurfaceInteraction& vertex, const Bsdf& bsdf, const Vec3d& wi) {
+    if (nextEvent && hasAny(bsdf.flags(), NonDelta))
+      out.radiance += throughput * directLighting(scene, vertex, bsdf, wi, random, estimator, lightSet);
+    const double uLobe = random.next();
+    const Vec2d u = random.next2D();
+    return bsdf.sample(wi, uLobe, u, TransportMode::Radiance);
+  };
+  // The path goes on from `point` (normal n) along a sampled direction.
+  const auto continueAlong = [&](const Vec3d& point, const Vec3d& n, const BsdfSample& sample) {
+    throughput *= sample.weight;
+    if (hasAny(sample.lobe, LobeFlags::Transmission)) etaScale *= sample.eta * sample.eta;
+    fromDelta = sample.isDelta();
+    bsdfPdf = sample.pdf;
+    origin = point;
+    ray = spawnRay(point, n, sample.wo);
+  };
 
   for (int bounce = 0;; ++bounce) {
+    // ---- Find the next vertex; a ray that escapes receives the lights at infinity.
     const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
       out.radiance += throughput * scene.escapedRadiance(ray.direction, emissionWeight, lightSet);
@@ -70,72 +87,48 @@ PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& ran
     }
     ++out.vertices;
     const Vec3d wi = -ray.direction;
+    if (bounce == 0) out.normal = hit->geometry.normal;
+
+    // ---- Emission found by the ray, weighted against NEE's chance of sampling it.
     if (hit->light >= 0) {
       const Rgb emitted = scene.emitted(*hit, wi);
       if (emitted != Rgb(0.0))
         out.radiance += throughput * emitted * emissionWeight(scene.emittedPdf(*hit, origin, lightSet));
     }
-    if (bounce == 0) out.normal = hit->geometry.normal;
+
+    // ---- End the path after its last bounce.
     if (bounce >= settings.maxDepth) break;
 
-    const Bsdf bsdf = hit->bsdf();
-    if (nextEvent && hasAny(bsdf.flags(), NonDelta))
-      out.radiance += throughput * directLighting(scene, *hit, bsdf, wi, random, estimator, lightSet);
-
-    const double uLobe = random.next();
-    const Vec2d u = random.next2D();
-    const std::optional<BsdfSample> sample = bsdf.sample(wi, uLobe, u, TransportMode::Radiance);
+    // ---- Scatter: next-event estimation, then a BSDF sample for the next direction.
+    const std::optional<BsdfSample> sample = scatter(*hit, hit->bsdf(), wi);
     if (bounce == 0 && sample) out.albedo = sample->weight;
     if (!sample || sample->weight == Rgb(0.0)) break;
-    const bool entersMedium = hit->subsurface && hasAny(sample->lobe, LobeFlags::Transmission) &&
-                              glm::dot(wi, hit->geometry.normal) > 0;
-    if (entersMedium && hit->subsurface->mode == SubsurfaceMode::Diffusion) {
-      // The BSSRDF (subsurface.h): Ft(wo) without the radiance scaling, R / pdf to the probe's
-      // point, and there a vertex of the directional term Sw.
-      const SceneSubsurface& medium = *hit->subsurface;
-      const std::optional<DiffusionExit> exit =
-          sampleDiffusionExit(scene, hit->shape, medium, hit->point, hit->geometry.normal, random);
+
+    if (entersMedium(*hit, wi, *sample)) {
+      // ---- Subsurface material: the light leaves the medium elsewhere (subsurface.h).
+      const std::optional<MediumExit> exit = leaveMedium(scene, *hit, *sample, random);
       if (!exit) break;
-      throughput *= sample->weight * (sample->eta * sample->eta) * exit->weight;
-      ++out.vertices;
-      SurfaceInteraction exitHit;
-      exitHit.point = exit->point;
-      exitHit.geometry = exit->geometry;
-      exitHit.model = &medium.exit;
-      exitHit.shape = hit->shape;
-      const Bsdf exitBsdf = exitHit.bsdf();
-      const Vec3d& n = exit->geometry.normal;
-      if (nextEvent)
-        out.radiance += throughput * directLighting(scene, exitHit, exitBsdf, n, random, estimator, lightSet);
-      const double uExitLobe = random.next();
-      const std::optional<BsdfSample> exitSample = exitBsdf.sample(n, uExitLobe, random.next2D());
-      if (!exitSample) break;
-      throughput *= exitSample->weight;
-      fromDelta = false;
-      bsdfPdf = exitSample->pdf;
-      origin = exit->point;
-      ray = spawnRay(exit->point, n, exitSample->wo);
-    } else if (entersMedium) {
-      // The random walk (subsurface.h): the radiance scalings of entering and leaving cancel.
-      const std::optional<WalkExit> exit =
-          walkThroughMedium(scene, hit->shape, *hit->subsurface,
-                            spawnRay(hit->point, hit->geometry.normal, sample->wo), random);
-      if (!exit) break;
-      throughput *= sample->weight * exit->weight;
-      fromDelta = true;  // no light was sampled where the walk left: emission found next counts in full
-      origin = exit->point;
-      ray = spawnRay(exit->point, exit->normal, exit->direction);
+      throughput *= exit->weight;
+      if (exit->vertex) {
+        // Diffusion: the exit point scatters like any other vertex, with Sw as its BSDF.
+        ++out.vertices;
+        const Vec3d& n = exit->vertex->geometry.normal;
+        const std::optional<BsdfSample> exitSample = scatter(*exit->vertex, exit->vertex->bsdf(), n);
+        if (!exitSample) break;
+        continueAlong(exit->vertex->point, n, *exitSample);
+      } else {
+        // The walk: no light was sampled where it left, so emission found next counts in full.
+        fromDelta = true;
+        origin = exit->ray.origin;
+        ray = exit->ray;
+      }
     } else {
-      throughput *= sample->weight;
-      if (hasAny(sample->lobe, LobeFlags::Transmission)) etaScale *= sample->eta * sample->eta;
-      fromDelta = sample->isDelta();
-      bsdfPdf = sample->pdf;
-      origin = hit->point;
-      ray = spawnRay(hit->point, hit->geometry.normal, sample->wo);
+      // ---- Continue along the sampled direction.
+      continueAlong(hit->point, hit->geometry.normal, *sample);
     }
 
-    // Russian roulette (pbrt-v4 PathIntegrator::Li): survive with probability q = the largest
-    // channel of throughput * etaScale, when below 1, and divide by it.
+    // ---- Russian roulette (pbrt-v4 PathIntegrator::Li): survive with probability q = the
+    // largest channel of throughput * etaScale, when below 1, and divide by it.
     if (bounce + 1 >= settings.rouletteDepth) {
       const Rgb scaled = throughput * etaScale;
       const double q = std::max({scaled.x, scaled.y, scaled.z});

@@ -57,6 +57,12 @@ inline double powerHeuristic(double pdfA, double pdfB) {
   return 1.0 / (1.0 + ratio * ratio);
 }
 
+// Next-event estimation at one vertex `hit` (BSDF `bsdf`, reached from the side of wi): one
+// light of `lightSet` sampled, its contribution f L |cos| / pdf, weighted against BSDF sampling
+// by the power heuristic (Mis) or in full (LightOnly, BsdfOnly). Three random numbers.
+Rgb directLighting(const Scene& scene, const SurfaceInteraction& hit, const Bsdf& bsdf, const Vec3d& wi,
+                   SampleStream& random, Estimator estimator, LightSet lightSet);
+
 PathSample tracePath(const Scene& scene, const Ray& cameraRay, SampleStream& random,
                      const IntegratorSettings& settings);
 

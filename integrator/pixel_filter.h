@@ -7,6 +7,8 @@
 //   box:       uniform over the pixel (width 1), as Cycles' "Box" filter of width 1;
 //   gaussian:  exp(-r^2 / (2 sigma^2)) truncated to the square |x|, |y| <= radius, sampled
 //              exactly by Box-Muller (Box & Muller 1958) with rejection outside the square.
+// Estimators that splat a film point onto the pixels around it (light tracing, BDPT) weigh it
+// by the same normalised density (density), so both ways give a pixel the same value.
 #pragma once
 
 #include <cmath>
@@ -30,8 +32,19 @@ class PixelFilter {
   }
 
   FilterType type() const { return type_; }
+  // Half the side of the filter's square support, in pixels (0.5 for the box).
   double sigma() const { return sigma_; }
   double radius() const { return radius_; }
+
+  // The normalised density of sampleOffset at `offset` (pixels): it integrates to 1 over the
+  // support. The truncated Gaussian keeps erf(radius / (sigma sqrt 2)) of its mass per axis.
+  double density(const Vec2d& offset) const {
+    if (std::abs(offset.x) > radius_ || std::abs(offset.y) > radius_) return 0.0;
+    if (type_ == FilterType::Box) return 1.0;
+    const double kept = std::erf(radius_ / (sigma_ * std::sqrt(2.0)));
+    return std::exp(-(offset.x * offset.x + offset.y * offset.y) / (2.0 * sigma_ * sigma_)) /
+           (2.0 * Pi * sigma_ * sigma_ * kept * kept);
+  }
 
   // An offset from the pixel centre, in pixels, distributed as the normalised filter.
   Vec2d sampleOffset(SampleStream& random) const {

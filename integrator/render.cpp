@@ -10,6 +10,10 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "integrator/bdpt.h"
+#include "integrator/light_tracer.h"
+#include "integrator/sppm.h"
+
 namespace scatterlab {
 
 namespace {
@@ -55,10 +59,41 @@ struct PixelAccumulator {
 
 }  // namespace
 
+std::vector<std::string> integratorNames() { return {"path", "light", "bdpt", "sppm"}; }
+
+std::optional<IntegratorKind> findIntegrator(std::string_view name) {
+  if (name == "path") return IntegratorKind::Path;
+  if (name == "light") return IntegratorKind::Light;
+  if (name == "bdpt") return IntegratorKind::Bdpt;
+  if (name == "sppm") return IntegratorKind::Sppm;
+  return std::nullopt;
+}
+
+std::string toString(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::Path: return "path";
+    case IntegratorKind::Light: return "light";
+    case IntegratorKind::Bdpt: return "bdpt";
+    case IntegratorKind::Sppm: return "sppm";
+  }
+  return "path";
+}
+
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const std::function<void(double)>& progress) {
   const PinholeCamera& camera = scene.camera();
   checkSettings(camera, settings);
+  if (settings.integratorKind != IntegratorKind::Path) {
+    if (scene.hasSubsurface())
+      throw std::invalid_argument("render: integrator \"" + toString(settings.integratorKind) +
+                                  "\" cannot render subsurface materials; allowed: \"path\"");
+    switch (settings.integratorKind) {
+      case IntegratorKind::Light: return renderLightTracing(scene, settings, progress);
+      case IntegratorKind::Bdpt: return renderBdpt(scene, settings, progress);
+      case IntegratorKind::Sppm: return renderSppm(scene, settings, progress);
+      case IntegratorKind::Path: break;
+    }
+  }
   const int width = camera.width(), height = camera.height();
   const int spp = settings.samplesPerPixel;
   RenderResult result;

@@ -13,6 +13,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "integrator/image.h"
 #include "integrator/path_tracer.h"
@@ -21,12 +25,33 @@
 
 namespace scatterlab {
 
+// The estimator that renders the image: the path tracer (path_tracer.h), light tracing
+// (light_tracer.h), bidirectional path tracing (bdpt.h) or stochastic progressive photon
+// mapping (sppm.h). All four share the scene, the camera, the pixel filter and the lights.
+enum class IntegratorKind { Path, Light, Bdpt, Sppm };
+std::vector<std::string> integratorNames();  // "path", "light", "bdpt", "sppm"
+std::optional<IntegratorKind> findIntegrator(std::string_view name);
+std::string toString(IntegratorKind kind);
+
+// Photon mapping's own settings (sppm.h).
+struct SppmSettings {
+  int64_t photonsPerIteration = 0;  // 0: one per pixel
+  // The initial gather radius in pixels: a visible point's radius starts as this many pixel
+  // footprints at its distance from the eye.
+  double initialRadiusPixels = 2.0;
+  double alpha = 2.0 / 3.0;  // the share of new photons kept per iteration (Hachisuka & Jensen 2009)
+};
+
 struct RenderSettings {
+  IntegratorKind integratorKind = IntegratorKind::Path;
+  // Samples per pixel; for SPPM, iterations (one camera ray per pixel and one photon pass each).
   int samplesPerPixel = 16;
   uint64_t seed = 1;
   int threads = 0;  // 0: all cores
   PixelFilter filter = PixelFilter::box();
-  IntegratorSettings integrator{};
+  IntegratorSettings
+      integrator{};  // maxDepth and roulette for every estimator; `estimator` for the path tracer
+  SppmSettings sppm{};
   bool albedoLayer = false, normalLayer = false, varianceLayer = false;
 };
 
@@ -49,8 +74,10 @@ struct RenderResult {
   RenderStatistics statistics;
 };
 
-// `progress` (may be empty) hears the fraction of tiles done, from worker threads. Settings
-// outside the limits above, or spp < 1, throw std::invalid_argument.
+// `progress` (may be empty) hears the fraction of the work done, from worker threads. Settings
+// outside the limits above, or spp < 1, throw std::invalid_argument; so do a scene the
+// estimator cannot render (a subsurface material for any but the path tracer) and a layer it
+// has none of (SPPM's variance), with a message that names it.
 RenderResult render(const Scene& scene, const RenderSettings& settings,
                     const std::function<void(double)>& progress = {});
 

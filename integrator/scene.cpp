@@ -1,5 +1,6 @@
 #include "integrator/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -190,6 +191,38 @@ SurfaceGeometry Scene::shapeGeometry(int shape, const Vec3d& point) const {
                       : planes_[ref.index].geometry.geometryAt(point);
 }
 
+int Scene::lightIndex(LightKind kind, int index) const {
+  for (size_t i = 0; i < lights_.size(); ++i)
+    if (lights_[i].kind == kind && lights_[i].index == index) return int(i);
+  return -1;
+}
+
+Sphere Scene::finiteBounds() const {
+  if (spheres_.empty()) return Sphere{Vec3d(0.0), 1.0};
+  Vec3d lo(Infinity), hi(-Infinity);
+  for (const SceneSphere& s : spheres_) {
+    lo = glm::min(lo, s.geometry.center - Vec3d(s.geometry.radius));
+    hi = glm::max(hi, s.geometry.center + Vec3d(s.geometry.radius));
+  }
+  const Vec3d center = 0.5 * (lo + hi);
+  double radius = 0.0;
+  for (const SceneSphere& s : spheres_)
+    radius = std::max(radius, glm::length(s.geometry.center - center) + s.geometry.radius);
+  return Sphere{center, radius};
+}
+
+Ray Scene::rayFromInfinity(const Vec3d& point, const Vec3d& direction) const {
+  // Back from `point` past the finite shapes and past every plane the line crosses behind it.
+  const Sphere bounds = finiteBounds();
+  double back = glm::length(point - bounds.center) + bounds.radius;
+  for (const ScenePlane& p : planes_) {
+    const double along = glm::dot(direction, p.geometry.normal);
+    if (along != 0) back = std::max(back, glm::dot(point - p.geometry.point, p.geometry.normal) / along);
+  }
+  back = back * (1.0 + 1e-6) + 1.0;
+  return Ray{point - back * direction, direction};
+}
+
 std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, const Vec2d& u,
                                               LightSet set) const {
   const std::vector<LightRef>& candidates = lights(set);
@@ -207,6 +240,7 @@ std::optional<LightSample> Scene::sampleLight(const Vec3d& p, double uSelect, co
   }
   if (sample && !sample->isDelta) sample->pdf /= count;
   if (sample && sample->isDelta) sample->pdf = 1.0 / count;
+  if (sample) sample->light = std::min(int(uSelect * count), count - 1);
   return sample;
 }
 

@@ -16,6 +16,7 @@
 
 #include "integrator/camera.h"
 #include "integrator/environment.h"
+#include "integrator/interaction.h"
 #include "integrator/lights.h"
 #include "integrator/shapes.h"
 #include "integrator/subsurface.h"
@@ -33,31 +34,12 @@ struct SurfaceMaterial {
   const SceneSubsurface* subsurface = nullptr;  // set for a subsurface material (model: its boundary)
 };
 
-// Where a ray met the scene.
-struct SurfaceInteraction {
-  double t = Infinity;
-  Vec3d point{0.0};
-  SurfaceGeometry geometry{};
-  const BsdfModel* model = nullptr;             // the material's model at this point
-  int shape = -1;                               // Scene::shape index
-  int light = -1;                               // index into Scene::sphereLights(), or -1: not an emitter
-  const SceneSubsurface* subsurface = nullptr;  // the medium below, for a subsurface material
-
-  // True when the model must not be mirrored to the front side (it has transmission).
-  bool twoSided() const { return !hasAny(model->flags(), LobeFlags::Transmission); }
-  // The shading frame: the shape's tangent is already orthogonal to the normal and of unit
-  // length where it exists (shapes.h), so it is used as it is.
-  Bsdf bsdf() const {
-    const Framed frame =
-        geometry.tangent == Vec3d(0.0)
-            ? Framed::fromNormal(geometry.normal)
-            : Framed(geometry.tangent, glm::cross(geometry.normal, geometry.tangent), geometry.normal);
-    return Bsdf(*model, frame, twoSided());
-  }
-};
-
 // One kind of light, as next-event estimation chooses among them.
 enum class LightKind { Environment, Sphere, Sun };
+struct LightRef {
+  LightKind kind;
+  int index;  // into Scene::sphereLights() or Scene::suns(); 0 for the environment
+};
 
 // Which lights next-event estimation samples. `All` of them (for the light-only estimator),
 // or those worth sampling under MIS: there a constant environment is left to BSDF sampling
@@ -97,6 +79,8 @@ class Scene {
   const std::vector<SphereLight>& sphereLights() const { return sphereLights_; }
   const std::vector<SunLight>& suns() const { return suns_; }
   int shapeCount() const { return int(shapes_.size()); }
+  // True when a subsurface material is in the scene (only the path tracer renders them).
+  bool hasSubsurface() const { return !subsurfaces_.empty(); }
 
   // The nearest surface hit by `ray` in (0, tMax).
   std::optional<SurfaceInteraction> intersect(const Ray& ray, double tMax = Infinity) const;
@@ -107,6 +91,19 @@ class Scene {
   double intersectShape(int shape, const Ray& ray, double tMin, double tMax) const;
   // The geometry of shape `shape` at `point` (on it).
   SurfaceGeometry shapeGeometry(int shape, const Vec3d& point) const;
+
+  // The lights of a set, in the order next-event estimation numbers them.
+  const std::vector<LightRef>& lights(LightSet set = LightSet::All) const {
+    return set == LightSet::All ? lights_ : misLights_;
+  }
+  // The position of a light in lights(LightSet::All), or -1.
+  int lightIndex(LightKind kind, int index) const;
+  // A sphere holding every shape of finite size (the spheres, lights included); the unit
+  // sphere at the origin when there is none. Light from infinity is aimed at it.
+  Sphere finiteBounds() const;
+  // A ray along the whole line through `point` in `direction`, starting before the line
+  // meets any surface (an infinite plane included): light arriving from infinity.
+  Ray rayFromInfinity(const Vec3d& point, const Vec3d& direction) const;
 
   // ---- Lights, for next-event estimation: one light of the set chosen uniformly, then sampled.
   int lightCount(LightSet set = LightSet::All) const { return int(lights(set).size()); }
@@ -155,14 +152,6 @@ class Scene {
     bool isSphere;
     int index;
   };
-  struct LightRef {
-    LightKind kind;
-    int index;
-  };
-
-  const std::vector<LightRef>& lights(LightSet set) const {
-    return set == LightSet::All ? lights_ : misLights_;
-  }
   int addShape(bool isSphere, int index);
   const BsdfModel* modelAt(int material, const Vec2d& uv) const;
   void checkMaterial(int material) const;

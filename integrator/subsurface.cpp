@@ -139,4 +139,33 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
   return std::nullopt;
 }
 
+bool entersMedium(const SurfaceInteraction& hit, const Vec3d& wi, const BsdfSample& sample) {
+  return hit.subsurface && hasAny(sample.lobe, LobeFlags::Transmission) &&
+         glm::dot(wi, hit.geometry.normal) > 0;
+}
+
+std::optional<MediumExit> leaveMedium(const Scene& scene, const SurfaceInteraction& hit,
+                                      const BsdfSample& sample, SampleStream& random) {
+  const SceneSubsurface& medium = *hit.subsurface;
+  if (medium.mode == SubsurfaceMode::RandomWalk) {
+    // The radiance scalings of entering and leaving cancel.
+    const std::optional<WalkExit> exit = walkThroughMedium(
+        scene, hit.shape, medium, spawnRay(hit.point, hit.geometry.normal, sample.wo), random);
+    if (!exit) return std::nullopt;
+    return MediumExit{sample.weight * exit->weight, std::nullopt,
+                      spawnRay(exit->point, exit->normal, exit->direction)};
+  }
+  // The BSSRDF: Ft(wo) without the radiance scaling, R / pdf to the probe's point, and there a
+  // vertex of the directional term Sw.
+  const std::optional<DiffusionExit> exit =
+      sampleDiffusionExit(scene, hit.shape, medium, hit.point, hit.geometry.normal, random);
+  if (!exit) return std::nullopt;
+  SurfaceInteraction vertex;
+  vertex.point = exit->point;
+  vertex.geometry = exit->geometry;
+  vertex.model = &medium.exit;
+  vertex.shape = hit.shape;
+  return MediumExit{sample.weight * (sample.eta * sample.eta) * exit->weight, vertex, Ray{}};
+}
+
 }  // namespace scatterlab

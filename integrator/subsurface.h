@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "integrator/interaction.h"
 #include "integrator/ray.h"
 #include "integrator/sampler.h"
 #include "integrator/shapes.h"
@@ -90,5 +91,25 @@ struct WalkExit {
 };
 std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const SceneSubsurface& subsurface,
                                           const Ray& inward, SampleStream& random);
+
+// ---- The camera path's continuation below the surface (path_tracer.cpp).
+
+// True when the boundary's sample `sample` at `hit`, reached from the side of `wi`, transmits
+// from outside into the medium of a subsurface material.
+bool entersMedium(const SurfaceInteraction& hit, const Vec3d& wi, const BsdfSample& sample);
+
+// Where the path comes out of the medium it entered by `sample` at `hit`, and the throughput's
+// factor from the boundary sample (included) to there. Diffusion: the probe's exit point is a
+// vertex of the path whose BSDF is Sw (`vertex`: next-event estimation and a direction sample
+// happen there as at any surface); the boundary's weight is taken without the 1/eta^2 radiance
+// scaling, which the light undoes on its way out. The walk: the path leaves along `ray`, found
+// by no light sampling. Nothing when the light is lost (the probe misses, the walk is absorbed).
+struct MediumExit {
+  Rgb weight{1.0};
+  std::optional<SurfaceInteraction> vertex;  // diffusion
+  Ray ray{};                                 // the walk
+};
+std::optional<MediumExit> leaveMedium(const Scene& scene, const SurfaceInteraction& hit,
+                                      const BsdfSample& sample, SampleStream& random);
 
 }  // namespace scatterlab

@@ -64,6 +64,9 @@ LabSettings LabSettings::fullMode(uint64_t seed) {
   s.fitSamples = 0;
   s.renderSize = 256;
   s.renderSpp = 256;
+  s.previewWidth = 256;
+  s.previewHeight = 192;
+  s.previewSpp = 128;
   return s;
 }
 
@@ -94,7 +97,8 @@ nlohmann::json LabSettings::toJson() const {
         {"grid_samples", fitGridSamples},
         {"start_samples", fitStartSamples}}},
       {"profile_bins", profileBins},
-      {"renders", {{"size", renderSize}, {"samples_per_pixel", renderSpp}, {"max_depth", renderMaxDepth}}}};
+      {"renders", {{"size", renderSize}, {"samples_per_pixel", renderSpp}, {"max_depth", renderMaxDepth}}},
+      {"preview", {{"size", {previewWidth, previewHeight}}, {"samples_per_pixel", previewSpp}}}};
 }
 
 }  // namespace scatterlab

@@ -19,6 +19,8 @@
 // renders (2 maps; a      160 x 160, 64 spp             256 x 256, 256 spp
 // measured material
 // and its 5 fits each)
+// preview scene (the      128 x 96, 32 spp              256 x 192, 128 spp
+// material alone, first map)
 #pragma once
 
 #include <cstddef>
@@ -59,6 +61,7 @@ struct LabSettings {
   int renderSize = 160;  // square renders of the material sphere (renders_section.h)
   int renderSpp = 64;
   int renderMaxDepth = 12;
+  int previewWidth = 128, previewHeight = 96, previewSpp = 32;  // the preview scene (renders_section.h)
 
   static LabSettings quickMode(uint64_t seed);
   static LabSettings fullMode(uint64_t seed);

@@ -166,10 +166,61 @@ SphereSceneFactory integratorSphereScene() {
   };
 }
 
+PreviewSceneFactory integratorPreviewScene() {
+  return [](const json& material, const Environment& environment, int width, int height) {
+    return makeMaterialScene(ScenePreset::Preview, material, environment, width, height);
+  };
+}
+
+namespace {
+
+// The material on the preview scene under the first map: preview.png and preview.exr, and its
+// entry for renders.json; an empty html when the renderer refused the material.
+struct PreviewRender {
+  std::string html;
+  json data;
+};
+
+PreviewRender previewRender(const LabMaterial& material, const LabSettings& settings,
+                            const LabEnvironment& environment, const fs::path& materialDir,
+                            const ProgressCallback& progress, const PreviewSceneFactory& previewOf) {
+  const Scene scene =
+      previewOf(material.description, environment.environment, settings.previewWidth, settings.previewHeight);
+  RenderSettings renderSettings;
+  renderSettings.samplesPerPixel = settings.previewSpp;
+  renderSettings.seed = settings.seed;
+  renderSettings.integrator.maxDepth = settings.renderMaxDepth;
+  const std::string stage = "render " + material.name + " on the preview scene";
+  const RenderResult result = render(scene, renderSettings, [&](double fraction) {
+    if (progress) progress(stage, fraction);
+  });
+  const double exposure = exposureFor(result.color);
+  writePngSrgb(materialDir / "preview.png", result.color, exposure);
+  writeExr(materialDir / "preview.exr", {{"", {"R", "G", "B"}, &result.color}});
+  const std::string caption = "on the preview scene (checkered ground, sphere light) under " +
+                              environment.name + ", " + std::to_string(settings.previewWidth) + " x " +
+                              std::to_string(settings.previewHeight) + " pixels, " +
+                              std::to_string(settings.previewSpp) + " samples per pixel, exposure " +
+                              html::number(exposure, 3) + " stops";
+  return {figure(material.folder + "/preview.png", material.name + " on the preview scene",
+                 html::textElement("b", material.name) + html::element("br", "") + html::escape(caption)),
+          {{"image", "preview.png"},
+           {"exr", "preview.exr"},
+           {"environment", environment.name},
+           {"size", {settings.previewWidth, settings.previewHeight}},
+           {"samples_per_pixel", settings.previewSpp},
+           {"exposure_stops", exposure},
+           {"seconds", result.statistics.seconds},
+           {"samples", result.statistics.samples},
+           {"non_finite_samples", result.statistics.nonFiniteSamples}}};
+}
+
+}  // namespace
+
 ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fits,
                              const LabSettings& settings, const std::vector<LabEnvironment>& environments,
                              const fs::path& materialDir, const ProgressCallback& progress,
-                             const SphereSceneFactory& sceneOf) {
+                             const SphereSceneFactory& sceneOf, const PreviewSceneFactory& previewOf) {
   ReportSection section;
   section.id = "renders";
   section.title = "Renders";
@@ -294,6 +345,16 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
                 : " ") +
           "Linear EXR images (with the variance of each pixel's mean) and renders.json are beside the PNGs.",
       {{"class", "small"}});
+  // The material alone on the preview scene, when the renderer took it.
+  json preview = nullptr;
+  if (!results.front().empty()) {
+    PreviewRender p =
+        previewRender(material, settings, environments.front(), materialDir, progress, previewOf);
+    body += html::textElement("h4", "on the preview scene") +
+            html::element("div", p.html, {{"class", "renders"}});
+    preview = std::move(p.data);
+  }
+
   section.html = refusals + about + body;
   section.data = {{"size", {size, size}},
                   {"samples_per_pixel", settings.renderSpp},
@@ -302,7 +363,8 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
                   {"environments", environmentsJson},
                   {"renders", renders},
                   {"differences", differences},
-                  {"refused", refused}};
+                  {"refused", refused},
+                  {"preview", preview}};
   writeTextFileAtomically(materialDir / "renders.json", section.data.dump(1) + "\n");
   return section;
 }

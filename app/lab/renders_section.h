@@ -1,5 +1,7 @@
 // The renders of a material's report: its sphere path-traced (integrator/render.h) under each
-// of the report's environment maps and, for a measured material, each family's fit rendered
+// of the report's environment maps, the material alone on the preview scene (the ground, the
+// contact shadow and, for a transparent material, the caustic under the first map and the
+// scene's sphere light) and, for a measured material, each family's fit rendered
 // the same way beside it with the difference |material - fit| (PNG to look at, linear EXR and
 // renders.json with the numbers beside it). Every render of one environment uses the same
 // seed, so material and fit share their random numbers (common random numbers) and the
@@ -52,6 +54,10 @@ std::vector<LabEnvironment> loadLabEnvironments(const std::vector<std::string>& 
 using SphereSceneFactory =
     std::function<Scene(const nlohmann::json& material, const Environment& environment, int size)>;
 SphereSceneFactory integratorSphereScene();
+// The material on the integrator's preview scene (integrator/scene_presets.h), width x height.
+using PreviewSceneFactory = std::function<Scene(const nlohmann::json& material,
+                                                const Environment& environment, int width, int height)>;
+PreviewSceneFactory integratorPreviewScene();
 
 // Renders `material` (and the families of `fits`, when given) under every environment and
 // writes the images into `materialDir`. A description the factory refuses (MaterialError, or
@@ -59,7 +65,8 @@ SphereSceneFactory integratorSphereScene();
 ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fits,
                              const LabSettings& settings, const std::vector<LabEnvironment>& environments,
                              const std::filesystem::path& materialDir, const ProgressCallback& progress,
-                             const SphereSceneFactory& sceneOf = integratorSphereScene());
+                             const SphereSceneFactory& sceneOf = integratorSphereScene(),
+                             const PreviewSceneFactory& previewOf = integratorPreviewScene());
 
 // The fit whose renders are closest to the material's (smallest mean over the maps of the
 // relative mean |material - fit|), with that difference per map: "Lambert + GGX: 1.5%

@@ -29,6 +29,9 @@ LabSettings tinyRenders() {
   LabSettings settings = LabSettings::quickMode(7);
   settings.renderSize = 24;
   settings.renderSpp = 4;
+  settings.previewWidth = 16;
+  settings.previewHeight = 12;
+  settings.previewSpp = 2;
   return settings;
 }
 
@@ -73,6 +76,26 @@ TEST(LabRenders, AMaterialTheRendererRefusesShowsTheRenderersMessage) {
                                             "this renderer renders nothing (test)"});
   EXPECT_FALSE(fs::exists(dir / "render_furnace_material.png"));
   EXPECT_TRUE(fs::exists(dir / "renders.json"));
+  EXPECT_TRUE(section.data["preview"].is_null());
+  EXPECT_FALSE(fs::exists(dir / "preview.png"));
+}
+
+// The material alone on the preview scene (ground, sphere light) under the first map.
+TEST(LabRenders, TheMaterialIsShownOnThePreviewScene) {
+  const fs::path dir = freshDir("lab-renders-preview");
+  const LabSettings settings = tinyRenders();
+  const ReportSection section = rendersSection(lambertian(0.5), nullptr, settings, furnace(), dir, {});
+  const json& preview = section.data["preview"];
+  ASSERT_TRUE(preview.is_object());
+  EXPECT_EQ(preview["image"], "preview.png");
+  EXPECT_EQ(preview["size"], json({settings.previewWidth, settings.previewHeight}));
+  EXPECT_EQ(
+      preview["samples"].get<uint64_t>(),
+      uint64_t(settings.previewWidth) * uint64_t(settings.previewHeight) * uint64_t(settings.previewSpp));
+  EXPECT_EQ(preview["non_finite_samples"].get<uint64_t>(), 0u);
+  EXPECT_TRUE(fs::exists(dir / "preview.png"));
+  EXPECT_TRUE(fs::exists(dir / "preview.exr"));
+  cli_runner::expectMentions(section.html, {"grey/preview.png", "on the preview scene"});
 }
 
 // The section looks at no type: a subsurface description is rendered when the renderer accepts it.

@@ -63,9 +63,19 @@ fs::path writeMap(const std::string& stem, int width, int height, float value, i
 TEST(RenderCli, HelpListsEveryOption) {
   const ProcessResult run = runScatterlab({"render", "--help"});
   EXPECT_EQ(run.exitCode, 0) << describe(run);
-  expectMentions(run.out, {"--scene", "--env", "--env-strength", "--env-rotate", "--spp", "--res",
-                           "--threads", "--seed", "--max-depth", "--estimator", "--subsurface", "--filter",
-                           "--exposure", "--layers", "--label", "--columns", "--out", "--json"});
+  expectMentions(run.out, {"--scene",        "--env",
+                           "--env-strength", "--env-rotate",
+                           "--spp",          "--res",
+                           "--threads",      "--seed",
+                           "--max-depth",    "--estimator",
+                           "--subsurface",   "--filter",
+                           "--exposure",     "--layers",
+                           "--label",        "--columns",
+                           "--out",          "--json",
+                           "--integrator",   "--light-position",
+                           "--light-radius", "--light-strength",
+                           "--no-light",     "--photons",
+                           "--sppm-radius",  "caustic"});
 }
 
 TEST(RenderCli, WritesExrAndPngWithLayersAndJson) {
@@ -104,6 +114,49 @@ TEST(RenderCli, MapAndPreviewSceneAndGaussianFilter) {
   expectMentions(run.out, {"copper-beckmann", "20x20", "wrote"});
   EXPECT_TRUE(fs::exists(prefix.string() + ".exr"));
   EXPECT_TRUE(fs::exists(prefix.string() + ".png"));
+}
+
+// Every estimator renders the caustic scene (glass on grey ground, the sphere light alone) to
+// EXR and PNG, with its variance layer where it has one, and says which it was.
+TEST(RenderCli, EveryIntegratorRendersTheCausticScene) {
+  for (const std::string integrator : {"path", "light", "bdpt", "sppm"}) {
+    const fs::path prefix = uniquePath("caustic-" + integrator);
+    std::vector<std::string> args{"render",       R"({"type":"dielectric"})",
+                                  "--integrator", integrator,
+                                  "--scene",      "caustic",
+                                  "--res",        "16x12",
+                                  "--spp",        "2",
+                                  "--out",        prefix.string(),
+                                  "--json"};
+    if (integrator != "sppm") args = args + std::vector<std::string>{"--layers", "variance,normal"};
+    const ProcessResult run = runScatterlab(args);
+    ASSERT_EQ(run.exitCode, 0) << describe(run);
+    const json out = json::parse(run.out);
+    EXPECT_EQ(out["integrator"], integrator);
+    EXPECT_EQ(out["environment"]["type"], "none");
+    EXPECT_EQ(out["light"]["radius"], PresetLight{}.radius);
+    EXPECT_EQ(out["renders"][0]["non_finite_samples"], 0);
+    EXPECT_GT(out["renders"][0]["vertices"].get<uint64_t>(), 0u);
+    EXPECT_TRUE(fs::exists(prefix.string() + ".png"));
+    const std::vector<std::string> channels = readExrChannelNames(prefix.string() + ".exr");
+    EXPECT_EQ(channels.size(), integrator == "sppm" ? 3u : 9u) << integrator;
+  }
+}
+
+TEST(RenderCli, ThePreviewLightMovesScalesAndGoes) {
+  const fs::path prefix = uniquePath("light");
+  const ProcessResult moved = runScatterlab(
+      {"render", WhiteLambertian, "--scene", "preview", "--light-position", "-2,1,3", "--light-radius", "0.5",
+       "--light-strength", "2", "--res", "8", "--spp", "1", "--out", prefix.string(), "--json"});
+  ASSERT_EQ(moved.exitCode, 0) << describe(moved);
+  const json light = json::parse(moved.out)["light"];
+  EXPECT_EQ(light["position"], json({-2.0, 1.0, 3.0}));
+  EXPECT_EQ(light["radius"], 0.5);
+  EXPECT_EQ(light["radiance"][0], 2 * PresetLight{}.radiance.x);
+  const ProcessResult gone = runScatterlab({"render", WhiteLambertian, "--scene", "preview", "--no-light",
+                                            "--res", "8", "--spp", "1", "--out", prefix.string(), "--json"});
+  ASSERT_EQ(gone.exitCode, 0) << describe(gone);
+  EXPECT_TRUE(json::parse(gone.out)["light"].is_null());
 }
 
 TEST(RenderCli, GalleryIsOneLabelledSheet) {
@@ -182,12 +235,45 @@ TEST_F(RenderCliBadInput, Resolutions) {
 TEST_F(RenderCliBadInput, SamplesAndSettings) {
   expectBadInput(with({"--spp", "0"}), {"--spp", "\"0\"", "[1, "}, prefix);
   expectBadInput(with({"--spp", "-3"}), {"--spp"}, prefix);
-  expectBadInput(with({"--scene", "cornell"}), {"--scene", "\"cornell\"", "\"sphere\", \"preview\""}, prefix);
+  expectBadInput(with({"--scene", "cornell"}),
+                 {"--scene", "\"cornell\"", "\"sphere\", \"preview\", \"caustic\""}, prefix);
   expectBadInput(with({"--estimator", "guess"}), {"--estimator", "\"mis\", \"bsdf\", \"light\""}, prefix);
   expectBadInput(with({"--subsurface", "photon"}), {"--subsurface", "\"diffusion\", \"walk\""}, prefix);
   expectBadInput(with({"--layers", "depth"}),
                  {"--layers", "\"depth\"", "\"albedo\", \"normal\", \"variance\""}, prefix);
   expectBadInput(with({"--env-strength", "nan"}), {"--env-strength", "\"nan\""}, prefix);
+}
+
+// An integrator that is not one, or that cannot take what it is given: one message, exit 2,
+// nothing written.
+TEST_F(RenderCliBadInput, Integrators) {
+  expectBadInput(with({"--integrator", "photon"}),
+                 {"--integrator", "\"photon\"", "\"path\", \"light\", \"bdpt\", \"sppm\""}, prefix);
+  for (const char* integrator : {"light", "bdpt", "sppm"})
+    expectBadInput(
+        {"render", R"({"type":"subsurface"})", "--integrator", integrator, "--out", prefix.string()},
+        {"subsurface", integrator, "--integrator path"}, prefix);
+  expectBadInput(with({"--integrator", "bdpt", "--estimator", "bsdf"}), {"--estimator", "--integrator path"},
+                 prefix);
+  expectBadInput(with({"--integrator", "sppm", "--layers", "variance"}), {"--layers", "variance", "sppm"},
+                 prefix);
+  expectBadInput(with({"--photons", "100"}), {"--photons", "--integrator sppm"}, prefix);
+  expectBadInput(with({"--integrator", "light", "--sppm-radius", "2"}),
+                 {"--sppm-radius", "--integrator sppm"}, prefix);
+}
+
+TEST_F(RenderCliBadInput, Lights) {
+  expectBadInput(with({"--light-radius", "0.5"}), {"--light-radius", "sphere scene", "preview or caustic"},
+                 prefix);
+  expectBadInput(with({"--scene", "preview", "--light-position", "0.5,0,0"}),
+                 {"--light-position", "meets the sphere"}, prefix);
+  expectBadInput(with({"--scene", "caustic", "--light-position", "3,0,-0.9"}), {"--light-position", "ground"},
+                 prefix);
+  expectBadInput(with({"--scene", "preview", "--light-position", "1,2"}), {"--light-position"}, prefix);
+  expectBadInput(with({"--scene", "preview", "--light-strength", "-1"}), {"--light-strength", "\"-1\""},
+                 prefix);
+  expectBadInput(with({"--scene", "preview", "--no-light", "--light-radius", "0.3"}), {"--no-light"}, prefix);
+  expectBadInput(with({"--env", "none", "--env-strength", "nan"}), {"--env-strength"}, prefix);
 }
 
 TEST_F(RenderCliBadInput, Materials) {

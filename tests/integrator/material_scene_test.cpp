@@ -62,7 +62,8 @@ TEST(MaterialScene, BothKindsRenderOnThePresetSphere) {
     for (int x = 0; x < 8; ++x) EXPECT_NEAR(white.color.rgb(x, y).x, 1.0, 1e-6) << x << ", " << y;
   const Scene skin = makeMaterialScene(
       ScenePreset::MaterialSphere, makeRenderableMaterial(json{{"type", "subsurface"}, {"medium", "Skin1"}}),
-      SubsurfaceMode::RandomWalk, Environment::constant(Rgb(1.0)), 8, 8);
+      SubsurfaceMode::RandomWalk,
+      presetLighting(ScenePreset::MaterialSphere, Environment::constant(Rgb(1.0))), 8, 8);
   const RenderResult walked = render(skin, settings, {});
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) EXPECT_TRUE(std::isfinite(walked.color.rgb(x, y).x)) << x << ", " << y;

@@ -89,21 +89,38 @@ TEST(Scene, ChoosesLightsUniformly) {
   EXPECT_DOUBLE_EQ(scene.emittedPdf(*hit, p), scene.sphereLights()[0].pdf(p) / 3.0);
 }
 
-TEST(ScenePresets, AreThePeersSceneAndThePreview) {
+TEST(ScenePresets, AreThePeersSceneThePreviewAndTheCaustic) {
   EXPECT_EQ(findScenePreset("sphere"), ScenePreset::MaterialSphere);
   EXPECT_EQ(findScenePreset("preview"), ScenePreset::Preview);
+  EXPECT_EQ(findScenePreset("caustic"), ScenePreset::Caustic);
   EXPECT_FALSE(findScenePreset("cornell"));
   const Scene sphere = makePresetScene(ScenePreset::MaterialSphere,
                                        std::make_unique<LambertianBsdf>(Rgb(1.0)), Environment(), 64, 48);
   EXPECT_EQ(sphere.shapeCount(), 1);
+  EXPECT_EQ(sphere.lightCount(), 1);  // the environment alone
   EXPECT_EQ(sphere.camera().eye(), Vec3d(0, -4, 0));
   EXPECT_EQ(sphere.camera().fovDegrees(), 45.0);
   EXPECT_EQ(sphere.camera().width(), 64);
   const Scene preview = makePresetScene(ScenePreset::Preview, std::make_unique<LambertianBsdf>(Rgb(1.0)),
                                         Environment(), 64, 48);
-  EXPECT_EQ(preview.shapeCount(), 2);
+  // The sphere, the sphere light and the ground; the environment and the light.
+  EXPECT_EQ(preview.shapeCount(), 3);
+  EXPECT_EQ(preview.lightCount(), 2);
+  EXPECT_EQ(preview.sphereLights()[0].sphere.center, PresetLight{}.position);
   // The sphere rests on the ground.
-  EXPECT_DOUBLE_EQ(preview.intersectShape(1, {Vec3d(0, 0, 5), Vec3d(0, 0, -1)}, 0.0, Infinity), 6.0);
+  EXPECT_DOUBLE_EQ(preview.intersectShape(2, {Vec3d(0, 0, 5), Vec3d(0, 0, -1)}, 0.0, Infinity), 6.0);
+  // The caustic scene: the light alone unless an environment is given; a plain grey ground.
+  const Scene caustic = makePresetScene(ScenePreset::Caustic, std::make_unique<LambertianBsdf>(Rgb(1.0)),
+                                        presetLighting(ScenePreset::Caustic, std::nullopt), 64, 48);
+  EXPECT_EQ(caustic.lightCount(), 1);
+  EXPECT_EQ(caustic.environment(), nullptr);
+  const std::optional<SurfaceInteraction> ground = caustic.intersect({Vec3d(2.5, 0.7, 5), Vec3d(0, 0, -1)});
+  ASSERT_TRUE(ground);
+  EXPECT_EQ(ground->model->eval(Vec3d(0, 0, 1), Vec3d(0, 0, 1)), Rgb(0.5 * InvPi));
+  // A light removed or moved.
+  const Scene dark = makePresetScene(ScenePreset::Preview, std::make_unique<LambertianBsdf>(Rgb(1.0)),
+                                     PresetLighting{Environment(), std::nullopt}, 8, 8);
+  EXPECT_EQ(dark.lightCount(), 1);
 }
 
 }  // namespace
