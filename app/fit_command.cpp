@@ -50,6 +50,9 @@ struct LoadedData {
   BrdfSamples samples;
 };
 
+// Inline JSON or a material file: anything that is not a measured file (told by content).
+bool isMaterialData(const std::string& data) { return isInlineMaterial(data) || !measuredFormatOf(data); }
+
 // An RGL file's own samples (brdf_samples.h samplesFromRgl); its nodes count as cells.
 LoadedData loadRgl(const std::string& data) {
   std::unique_ptr<RglBrdf> brdf;

@@ -361,7 +361,7 @@ FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape)
   for (const FitComponent& comp : components_) {
     if (comp.fittedIndex && components_.size() > 1)
       throw MaterialError(
-          "model component " + quoted(comp.label) +
+          "model component " + inQuotes(comp.label) +
           ": a conductor whose index is fitted (no \"metal\", \"eta\" or \"k\") carries its whole "
           "value in its Fresnel factor and can only be fitted alone; allowed: \"conductor\" by "
           "itself, a conductor with a given index, or a white specular lobe with a fitted RGB scale, "
@@ -409,7 +409,7 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   const MaterialModel& registry = *findMaterialModel(type);
   if (!registry.plugin.empty())
     if (const auto why = pluginRefusal(registry, completed))
-      throw MaterialError("model component " + quoted(type) + " cannot be fitted: " + *why +
+      throw MaterialError("model component " + inQuotes(type) + " cannot be fitted: " + *why +
                           "; allowed: a plugin model with 1 to " + std::to_string(MaxSlots) +
                           " numeric values that only reflects");
 
@@ -486,7 +486,7 @@ void FitModel::addComponent(const json& description, const std::string& label, b
     }
     const ValueRange range = shape.ownRange ? *shape.ownRange : registry.findParameter(shape.key)->range;
     if (!registry.plugin.empty() && !(std::isfinite(range.min) && std::isfinite(range.max)))
-      throw MaterialError("model component " + quoted(label) + ": parameter " + quoted(shape.key) +
+      throw MaterialError("model component " + inQuotes(label) + ": parameter " + inQuotes(shape.key) +
                           " has an unbounded range (" + range.describe() +
                           "), which the fitter's grid cannot cover; allowed: give it a value to hold it");
     std::array<int, 3> perEvaluation{};
