@@ -233,8 +233,8 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
   BsdfCheckOptions& kit = options.kit;
   command->add_option(
       "material", options.materials,
-      "Materials: inline JSON ('{\"type\": \"conductor\"}'), JSON files or MERL .binary files; "
-      "none: a built-in showcase");
+      "Materials: inline JSON ('{\"type\": \"conductor\"}'), JSON files, or measured files (a MERL .binary "
+      "table or an RGL .bsdf file, told apart by content); none: a built-in showcase");
   // One value per --wi-theta, split at commas, so that the materials after it stay positional.
   command->add_option("--wi-theta", kit.wiThetaDeg, "Incident polar angles in degrees, comma-separated")
       ->type_name("DEGREES")

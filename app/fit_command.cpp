@@ -5,6 +5,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -22,8 +23,10 @@
 #include "fitting/material_writer.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/quoted.h"
+#include "materials/measured/measured_file.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
+#include "materials/measured/rgl_brdf.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
 
@@ -40,24 +43,51 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
-bool isMaterialData(const std::string& data) {
-  return isInlineMaterial(data) || (data.size() > 5 && data.substr(data.size() - 5) == ".json");
-}
-
 struct LoadedData {
   std::string label;
-  std::string kind;  // "merl" or "material"
+  std::string kind;  // "merl", "rgl" or "material"
   MerlSampleCounts counts;
   BrdfSamples samples;
 };
 
-// A material tabulated in the MERL layout (no perturbation), or a MERL file; its usable cells.
+// Inline JSON or a material file: anything that is not a measured file (told by content).
+bool isMaterialData(const std::string& data) { return isInlineMaterial(data) || !measuredFormatOf(data); }
+
+// An RGL file's own samples (brdf_samples.h samplesFromRgl); its nodes count as cells.
+LoadedData loadRgl(const std::string& data) {
+  std::unique_ptr<RglBrdf> brdf;
+  try {
+    brdf = readRglBrdf(data);
+  } catch (const TensorFileError& error) {
+    throw InputError(std::string(error.what()));
+  }
+  LoadedData loaded;
+  loaded.label = data;
+  loaded.kind = "rgl";
+  RglSampleCounts counts;
+  loaded.samples = samplesFromRgl(*brdf, &counts);
+  loaded.counts.cells = counts.nodes;
+  loaded.counts.unreachable = counts.belowHorizon;
+  loaded.counts.usable = counts.usable;
+  if (loaded.samples.empty())
+    throw InputError("DATA " + inQuotes(data) + ": no tabulated direction pair above the surface");
+  return loaded;
+}
+
+// A material tabulated in the MERL layout (no perturbation), a MERL file, or an RGL file (told
+// apart by content, whatever the name: materials/measured/measured_file.h); its usable cells.
 // `claimOutputs` runs once the data is known to be valid, before the tabulation.
 LoadedData loadData(const std::string& data, int threads, ProgressLine& progress,
                     const std::function<void()>& claimOutputs) {
+  const std::optional<MeasuredFormat> format = isInlineMaterial(data) ? std::nullopt : measuredFormatOf(data);
+  if (format == MeasuredFormat::Rgl) {
+    LoadedData loaded = loadRgl(data);
+    claimOutputs();
+    return loaded;
+  }
   LoadedData loaded;
   MerlTable table;
-  if (isMaterialData(data)) {
+  if (!format) {
     const json material = loadMaterialArgument(data);
     std::unique_ptr<BsdfModel> model;
     try {
@@ -77,8 +107,8 @@ LoadedData loadData(const std::string& data, int threads, ProgressLine& progress
     } catch (const MerlError& error) {
       throw InputError(
           std::string(error.what()) +
-          "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes), or a material as inline JSON "
-          "or a .json file");
+          "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes), an RGL .bsdf tensor file, or a "
+          "material as inline JSON or a .json file");
     }
     loaded.label = data;
     loaded.kind = "merl";
@@ -114,11 +144,17 @@ std::string rangeText(const ParameterEstimate& e) {
 void printReport(const FitCommandOptions& options, const LoadedData& data, const FitResult& result,
                  const WrittenMaterial& written, const FitVerdict& verdict, const std::string& writtenPath) {
   std::printf("fit: %s to %s\n", options.model.c_str(), data.label.c_str());
-  std::printf("data: %zu usable cells (%zu missing, %zu below the horizon); fitted on %s\n",
-              data.counts.usable, data.counts.missing, data.counts.unreachable,
-              result.samples == data.counts.usable
-                  ? "all of them"
-                  : ("a stratified subset of " + std::to_string(result.samples)).c_str());
+  const std::string fittedOn = result.samples == data.counts.usable
+                                   ? "all of them"
+                                   : "a stratified subset of " + std::to_string(result.samples);
+  if (data.kind == "rgl")
+    std::printf(
+        "data: %zu direction pairs the file tabulates, weight 1 each (%zu more below the horizon, not "
+        "used); fitted on %s\n",
+        data.counts.usable, data.counts.unreachable, fittedOn.c_str());
+  else
+    std::printf("data: %zu usable cells (%zu missing, %zu below the horizon); fitted on %s\n",
+                data.counts.usable, data.counts.missing, data.counts.unreachable, fittedOn.c_str());
   const Metric metric = *parseMetric(options.metric);
   std::printf("metric: %s; robust loss: %s", describe(metric).c_str(), options.robust.c_str());
   if (result.robustScale > 0) std::printf(" (scale %.4g)", result.robustScale);
@@ -162,17 +198,23 @@ void printReport(const FitCommandOptions& options, const LoadedData& data, const
 CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
   CLI::App* command = app.add_subcommand(
       "fit",
-      "Fit registry models to a MERL table (or a material tabulated like one) with Ceres, with error bars; "
-      "writes the fitted material as registry JSON");
+      "Fit registry models to measured data (a MERL table, an RGL .bsdf file, or a material tabulated like a "
+      "MERL table) with Ceres, with error bars; writes the fitted material as registry JSON");
   command
-      ->add_option("data", options.data,
-                   "MERL .binary file, or a material (inline JSON or a .json file) to tabulate")
+      ->add_option(
+          "data", options.data,
+          "MERL .binary file, RGL .bsdf file (the file's own tabulated direction pairs; format told by "
+          "content), or a material (inline JSON or a .json file) to tabulate")
       ->required();
   command
       ->add_option(
           "--model", options.model,
           "Registry types joined by '+', e.g. lambertian+ngan-cook-torrance; a part may be a JSON object "
-          "whose values are held, e.g. lambertian+{\"type\":\"conductor\",\"distribution\":\"beckmann\"}")
+          "whose values are held, e.g. {\"type\":\"conductor\",\"distribution\":\"beckmann\"}. A conductor "
+          "without metal or eta/k has its index fitted (f0 and edge tint per channel, written as eta and k) "
+          "and "
+          "is fitted alone; lambertian+{\"type\":\"conductor\",\"eta\":1,\"k\":1e8} is Lambert plus a white "
+          "GGX lobe with a fitted RGB scale")
       ->type_name("SPEC")
       ->required();
   command->add_option("--metric", options.metric, "Error metric: l2, ngan, low-l2, low-log, cube-root")

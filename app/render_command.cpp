@@ -291,7 +291,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
       "materials make a labelled contact sheet (gallery)");
   command
       ->add_option("material", options.materials,
-                   "Material(s): inline JSON, JSON files or MERL .binary files; several: a gallery")
+                   "Material(s): inline JSON, JSON files, or measured files (MERL .binary, RGL .bsdf); "
+                   "several: a gallery")
       ->required();
   command
       ->add_option("--integrator", options.integrator,

@@ -2,6 +2,10 @@
 // Concrete `final` types, as the renderer's templated paths will call them.
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "materials/bsdf/ashikhmin_shirley.h"
@@ -25,6 +29,8 @@
 #include "materials/core/rng.h"
 #include "materials/core/warp.h"
 #include "materials/measured/measurement_synthesis.h"
+#include "materials/measured/rgl_brdf.h"
+#include "materials/measured/rgl_synthesis.h"
 #include "materials/measured/tabulated_brdf.h"
 
 namespace scatterlab {
@@ -274,6 +280,33 @@ SCATTERLAB_BSDF_BENCHMARKS(Phong, phong())
 SCATTERLAB_BSDF_BENCHMARKS(BlinnPhong, blinnPhong())
 SCATTERLAB_BSDF_BENCHMARKS(NganLafortune, nganLafortune())
 SCATTERLAB_BSDF_BENCHMARKS(MeasuredChrome, measuredChrome())
+
+// RGL files (docs/references.md, "RGL measured BRDFs"): the two shipped ones (isotropic, 128 x
+// 128 vndf, 32 x 32 colour, 8 elevations) and an anisotropic one written from anisotropic GGX
+// gold (9 x 6 incident directions, so every lookup blends four slices). Target: sample <= 1 us.
+const RglBrdf& rglFile(const char* name) {
+  static std::map<std::string, std::unique_ptr<RglBrdf>> files;
+  auto& file = files[name];
+  if (!file)
+    file = readRglBrdf(std::filesystem::path(SCATTERLAB_DATA_DIR) / "rgl" / (std::string(name) + ".bsdf"));
+  return *file;
+}
+const RglBrdf& rglAnisotropic() {
+  static const RglBrdf brdf = [] {
+    const MicrofacetConductorBsdf<GgxDistribution<double>> gold(GgxDistribution<double>(0.15, 0.4),
+                                                                findMetal("Au")->eta, findMetal("Au")->k);
+    RglSynthesisOptions options;
+    options.phiI.clear();
+    for (int i = 0; i < 9; ++i) options.phiI.push_back(-Pi + 2 * Pi * i / 8);
+    options.vndfResolution = 128;
+    options.colourResolution = 32;
+    return RglBrdf(synthesizeRglFile(modelChannels(gold), options), "anisotropic gold");
+  }();
+  return brdf;
+}
+SCATTERLAB_BSDF_BENCHMARKS(RglIbizaSunset, rglFile("cc_ibiza_sunset_rgb"))
+SCATTERLAB_BSDF_BENCHMARKS(RglAcrylicFelt, rglFile("acrylic_felt_green_rgb"))
+SCATTERLAB_BSDF_BENCHMARKS(RglAnisotropicGold, rglAnisotropic())
 
 // The rough dielectric compensation's two albedo tables (adaptive nodes by the fixed-rule
 // quadrature) and samplers, built from scratch: what a new roughness or index costs (a

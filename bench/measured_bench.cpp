@@ -1,6 +1,7 @@
 // Measured BRDFs: loading a MERL file into a TabulatedBrdf (target <= 0.3 s: read, fill rule,
-// sampler tables), and generating a table (`scatterlab synth`, single thread). Eval, pdf and
-// sample are in bsdf_bench (MeasuredChrome).
+// sampler tables), generating a table (`scatterlab synth`, single thread), and loading an RGL
+// file (target <= 50 ms: read, validate, build the warps). Eval, pdf and sample are in
+// bsdf_bench (MeasuredChrome, Rgl*).
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include "materials/bsdf/lambertian.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/merl_io.h"
+#include "materials/measured/rgl_brdf.h"
 #include "materials/measured/tabulated_brdf.h"
 
 namespace scatterlab {
@@ -55,7 +57,15 @@ void synthesiseTable(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(synthesizer.synthesize());
 }
 
+// Argument: 0 the glossy vinyl, 1 the felt (both 659 kB).
+void loadRglFile(benchmark::State& state) {
+  const char* name = state.range(0) == 0 ? "cc_ibiza_sunset_rgb.bsdf" : "acrylic_felt_green_rgb.bsdf";
+  const std::filesystem::path path = std::filesystem::path(SCATTERLAB_DATA_DIR) / "rgl" / name;
+  for (auto _ : state) benchmark::DoNotOptimize(readRglBrdf(path));
+}
+
 BENCHMARK(readMerlFile)->Unit(benchmark::kMillisecond);
+BENCHMARK(loadRglFile)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(loadTabulatedBrdf)->Unit(benchmark::kMillisecond);
 BENCHMARK(synthesiseTable)->Unit(benchmark::kMillisecond);
 

@@ -51,6 +51,21 @@ BrdfSamples samplesFromMerl(const MerlTable& table, MerlSampleCounts* counts) {
   return samples;
 }
 
+BrdfSamples samplesFromRgl(const RglBrdf& brdf, RglSampleCounts* counts) {
+  RglSampleCounts c;
+  const auto pairs = brdf.tabulatedPairs(&c.belowHorizon);
+  const size_t columns = brdf.colourColumns(), rows = brdf.colourRows();
+  BrdfSamples samples;
+  samples.reserve(pairs.size());
+  for (const RglBrdf::TabulatedPair& pair : pairs)
+    samples.add(pair.wi, pair.wo, brdf.eval(pair.wi, pair.wo), 1.0,
+                uint32_t(pair.incident * rows + pair.node / columns));
+  c.usable = samples.size();
+  c.nodes = c.usable + c.belowHorizon;
+  if (counts) *counts = c;
+  return samples;
+}
+
 BrdfSamples stratifiedSubset(const BrdfSamples& samples, size_t target, uint64_t seed) {
   const size_t total = samples.size();
   if (target == 0 || target >= total) return samples;

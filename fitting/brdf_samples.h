@@ -7,6 +7,14 @@
 // samples). A cell is usable when it is measured (no channel negative: missing measurements
 // are excluded, never filled in) and its centre is a reflection above the surface. Weight 1.
 //
+// From an RGL file (samplesFromRgl): the file's own samples, the pairs it tabulates
+// (RglBrdf::tabulatedPairs): at each incident direction of its grid above the surface, every
+// node of its colour grid mapped through the file's vndf warp to wo, with the BRDF there (the
+// stored colour itself). Weight 1 each, as a MERL cell: the file's warp places its nodes
+// densely where the reflectance is, as MERL's theta_h cells crowd the highlight; pairs whose
+// wo falls below the horizon are counted, not used. Strata: one per incident direction and
+// colour-grid row.
+//
 // Subsets (stratifiedSubset): the strata are the (theta_h, theta_d) cells, 180 phi_d cells
 // each. In a stratum with n samples, k = ceil(n * target / total) are chosen without
 // replacement (a partial Fisher-Yates shuffle driven by CounterRng(seed, stratum)) and each
@@ -21,6 +29,7 @@
 
 #include "materials/core/math.h"
 #include "materials/measured/merl_io.h"
+#include "materials/measured/rgl_brdf.h"
 
 namespace scatterlab::fitting {
 
@@ -51,6 +60,12 @@ struct MerlSampleCounts {
 
 // Every usable cell of `table` (see above); `counts` (optional) says how many were dropped.
 BrdfSamples samplesFromMerl(const MerlTable& table, MerlSampleCounts* counts = nullptr);
+
+struct RglSampleCounts {
+  size_t nodes = 0, belowHorizon = 0, usable = 0;
+};
+
+BrdfSamples samplesFromRgl(const RglBrdf& brdf, RglSampleCounts* counts = nullptr);
 
 // A stratified subset of about `target` samples (see above); a copy of `samples` when
 // target is 0 or not below its size.

@@ -28,6 +28,10 @@ struct ShapeInfo {
   GridSpacing spacing = GridSpacing::Linear;
   bool heldByDefault = false;    // held at its registry default unless given
   const char* tiedTo = nullptr;  // follows this shape unless either is given
+  // A fitted quantity that is not a registry key (a conductor's f0 and edge tint): its range
+  // and start, instead of the registry's.
+  std::optional<ValueRange> ownRange = std::nullopt;
+  double ownStart = 0;
 };
 
 // A linear term: the registry key of its scale ("scale": the blend weight of a model without
@@ -158,6 +162,30 @@ const LobeInfo& pluginLobeInfo(const MaterialModel& model) {
     info.shapes.push_back({spec.name.c_str(), slots, logarithmic ? GridSpacing::Log : GridSpacing::Linear});
   }
   return infos.emplace_back(std::move(info));
+}
+
+FitKernelVariant fittedIndexConductorKernel(const json& completed) {
+  if (completed.at("distribution") == "beckmann") return FittedIndexConductorKernel<BeckmannDistribution>{};
+  return FittedIndexConductorKernel<GgxDistribution>{};
+}
+
+// A conductor that names neither "metal" nor "eta"/"k": its index is fitted as f0 and edge
+// tint per channel (fit_model.h). f0 stays inside (0, 1), where the map to (eta, k) is finite
+// and smooth; 0.001 and 0.999 are darker and brighter than any metal's reflectance in RGB.
+const LobeInfo& fittedIndexConductorInfo() {
+  static const LobeInfo info{
+      "conductor",
+      {},
+      {{"alpha", 2, GridSpacing::Log},
+       {"f0", 3, GridSpacing::Linear, false, nullptr, ValueRange::closed(0.001, 0.999), 0.5},
+       {"edge_tint", 3, GridSpacing::Linear, false, nullptr, ValueRange::closed(0.0, 1.0), 0.5}},
+      fittedIndexConductorKernel,
+      true};
+  return info;
+}
+
+bool namesNoIndex(const json& description) {
+  return !description.contains("metal") && !description.contains("eta") && !description.contains("k");
 }
 
 const LobeInfo* findLobeInfo(const std::string& type) {
@@ -331,8 +359,14 @@ FitModel::FitModel(const std::vector<json>& descriptions, bool perChannelShape)
     addComponent(d, label, repeated);
   }
   for (const FitComponent& comp : components_) {
-    const LobeInfo& info = *findLobeInfo(comp.type);
-    if (info.hasRest && components_.size() > 1)
+    if (comp.fittedIndex && components_.size() > 1)
+      throw MaterialError(
+          "model component " + inQuotes(comp.label) +
+          ": a conductor whose index is fitted (no \"metal\", \"eta\" or \"k\") carries its whole "
+          "value in its Fresnel factor and can only be fitted alone; allowed: \"conductor\" by "
+          "itself, a conductor with a given index, or a white specular lobe with a fitted RGB scale, "
+          "{\"type\":\"conductor\",\"eta\":1,\"k\":1e8}");
+    if (comp.hasRest && components_.size() > 1)
       throw MaterialError(
           "model component " + inQuotes(comp.label) +
           ": a model with no linear scale of its whole value (eon, disney, ashikhmin-shirley) can "
@@ -353,20 +387,15 @@ void FitModel::addComponent(const json& description, const std::string& label, b
     throw MaterialError("model component " + inQuotes(type) + " cannot be fitted: " + refusal(type) +
                         "; allowed: " + allowedModels());
   }
-  json given = description;
-  const bool white =
-      type == "conductor" && !given.contains("metal") && !given.contains("eta") && !given.contains("k");
-  if (white) {
-    // A white conductor (F = 1 to round-off) whose colour and strength are the fitted scale.
-    given["eta"] = 1.0;
-    given["k"] = 1e8;
-  }
+  const bool fittedIndex = type == "conductor" && namesNoIndex(description);
+  if (fittedIndex) info = &fittedIndexConductorInfo();
   json completed;
   try {
-    completed = completeMaterial(given);
+    completed = completeMaterial(description);
   } catch (const MaterialError& error) {
     throw MaterialError("model component " + inQuotes(label) + ": " + error.what());
   }
+  if (fittedIndex) completed.erase("metal");  // the default metal: the fit replaces it by (eta, k)
   if (type == "conductor" && completed.value("multiscatter", "none") != "none")
     throw MaterialError("model component " + inQuotes(label) + ": \"multiscatter\": \"" +
                         completed["multiscatter"].get<std::string>() +
@@ -380,7 +409,7 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   const MaterialModel& registry = *findMaterialModel(type);
   if (!registry.plugin.empty())
     if (const auto why = pluginRefusal(registry, completed))
-      throw MaterialError("model component " + quoted(type) + " cannot be fitted: " + *why +
+      throw MaterialError("model component " + inQuotes(type) + " cannot be fitted: " + *why +
                           "; allowed: a plugin model with 1 to " + std::to_string(MaxSlots) +
                           " numeric values that only reflects");
 
@@ -389,6 +418,8 @@ void FitModel::addComponent(const json& description, const std::string& label, b
   comp.type = type;
   comp.description = completed;
   comp.kernel = info->kernel(completed);
+  comp.fittedIndex = fittedIndex;
+  comp.hasRest = info->hasRest;
   comp.terms = int(info->terms.size());
   comp.scalable = !info->hasRest;
   for (auto& e : comp.slotParameter) e.fill(-1);
@@ -439,7 +470,9 @@ void FitModel::addComponent(const json& description, const std::string& label, b
     comp.shapeLayout.push_back({shape.key, slot, shape.slots});
     const bool given = description.contains(shape.key);
     const bool tieGiven = shape.tiedTo && description.contains(shape.tiedTo);
-    const std::vector<double> values = slotValues(completed.at(shape.key), shape.slots);
+    const std::vector<double> values = shape.ownRange
+                                           ? std::vector<double>(size_t(shape.slots), shape.ownStart)
+                                           : slotValues(completed.at(shape.key), shape.slots);
     for (int i = 0; i < shape.slots; ++i) comp.heldSlot[size_t(slot + i)] = values[size_t(i)];
     if (given || shape.heldByDefault) {
       slot += shape.slots;
@@ -451,9 +484,9 @@ void FitModel::addComponent(const json& description, const std::string& label, b
       slot += shape.slots;
       continue;
     }
-    const ValueRange range = registry.findParameter(shape.key)->range;
+    const ValueRange range = shape.ownRange ? *shape.ownRange : registry.findParameter(shape.key)->range;
     if (!registry.plugin.empty() && !(std::isfinite(range.min) && std::isfinite(range.max)))
-      throw MaterialError("model component " + quoted(label) + ": parameter " + quoted(shape.key) +
+      throw MaterialError("model component " + inQuotes(label) + ": parameter " + inQuotes(shape.key) +
                           " has an unbounded range (" + range.describe() +
                           "), which the fitter's grid cannot cover; allowed: give it a value to hold it");
     std::array<int, 3> perEvaluation{};
@@ -507,6 +540,21 @@ std::vector<FittedPart> FitModel::fittedParts(const double* x) const {
         json values = json::array();
         for (int i = 0; i < shape.slotCount; ++i) values.push_back(slotValue(shape.firstSlot + i));
         part.material[shape.key] = values;
+      }
+      if (comp.fittedIndex) {
+        // f0 and edge tint -> the (eta, k) the registry conductor takes.
+        json eta = json::array(), k = json::array();
+        for (int c = 0; c < 3; ++c) {
+          const ComplexIndexT<double> index =
+              indexFromReflectanceAndEdgeTint(part.material.at("f0").at(size_t(c)).get<double>(),
+                                              part.material.at("edge_tint").at(size_t(c)).get<double>());
+          eta.push_back(index.eta);
+          k.push_back(index.k);
+        }
+        part.material.erase("f0");
+        part.material.erase("edge_tint");
+        part.material["eta"] = eta;
+        part.material["k"] = k;
       }
       part.scalable = comp.scalable;
       for (int j = 0; j < comp.terms; ++j) {

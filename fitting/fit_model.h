@@ -9,12 +9,17 @@
 //  - a [x, y] pair (alpha, exponent) is fitted as one value used for both;
 //  - Lafortune's cy follows cx (Ngan's Cxy) unless one of them is given;
 //  - Disney's "anisotropic" is held at 0 unless given.
-// The conductor's complex index is held: the spec's "metal" or "eta"/"k", or else a white
-// conductor (eta 1, k 1e8: F = 1 to round-off), the lobe then carrying an RGB "scale" (the
-// weight the fitted material blends it with). Repeated lobes (--lobes N) hold their diffuse
-// terms (kd of Phong, Blinn-Phong, Lafortune) at 0, so that only one term is diffuse.
-// perChannelShape: each shared scalar shape parameter becomes one per channel (the kernel is
-// then evaluated once per channel).
+// The conductor's complex index is held when the spec gives it ("metal", or "eta" and "k");
+// otherwise it is fitted per channel as the normal-incidence reflectance "f0" and the "edge_tint"
+// (Gulbrandsen 2014; lobe_kernels.h FittedIndexConductorKernel), in [0.001, 0.999] and
+// [0, 1], and the written material holds the (eta, k) they determine; such a conductor carries
+// its whole value in its Fresnel factor and is fitted alone. A conductor with a given index
+// carries an RGB "scale" (the weight the fitted material blends it with); given as white,
+// {"type": "conductor", "eta": 1, "k": 1e8} (F = 1 to round-off, WhiteConductorSpec), it is the
+// classic specular lobe of a diffuse-plus-specular fit, its colour and strength the scale. Repeated lobes
+// (--lobes N) hold their diffuse terms (kd of Phong, Blinn-Phong, Lafortune) at 0, so that only one term is
+// diffuse. perChannelShape: each shared scalar shape parameter becomes one per channel (the kernel is then
+// evaluated once per channel).
 //
 // Models that cannot be fitted: those with delta lobes (no BRDF values to compare), with
 // transmission, whose kernels read precomputed tables (rough-plastic, Kulla-Conty
@@ -57,8 +62,9 @@ using FitKernelVariant =
     std::variant<LambertianKernel, OrenNayarKernel, EonKernel, NormalizedPhongKernel<PhongLobe>,
                  NormalizedPhongKernel<BlinnPhongLobe>, LafortuneKernel, WardKernel, NganWardKernel,
                  AshikhminShirleyKernel, NganAshikhminShirleyKernel, NganCookTorranceKernel,
-                 ConductorKernel<GgxDistribution>, ConductorKernel<BeckmannDistribution>, DisneyKernel,
-                 PluginModelKernel>;
+                 ConductorKernel<GgxDistribution>, ConductorKernel<BeckmannDistribution>,
+                 FittedIndexConductorKernel<GgxDistribution>,
+                 FittedIndexConductorKernel<BeckmannDistribution>, DisneyKernel, PluginModelKernel>;
 
 inline constexpr int MaxSlots = 13;
 inline constexpr int MaxTerms = 2;
@@ -87,6 +93,11 @@ struct FitComponent {
     int firstSlot = 0, slotCount = 1;
   };
   std::vector<ShapeLayout> shapeLayout;
+  // A conductor whose index is fitted as f0 and edge tint (written as eta and k).
+  bool fittedIndex = false;
+  // Part of the value is not scaled by any linear term (eon, disney, ashikhmin-shirley, a
+  // conductor with a fitted index): such a model is fitted alone.
+  bool hasRest = false;
 };
 
 // A part of the fitted model as a registry material, with how the written material must
@@ -140,6 +151,10 @@ class FitModel {
   std::vector<FitParameter> parameters_;
   bool perChannelShape_;
 };
+
+// The white specular lobe of diffuse-plus-specular fits ("lambertian+" + WhiteConductorSpec):
+// a GGX conductor with F = 1 to round-off, coloured and weighted by its fitted scale.
+inline constexpr const char* WhiteConductorSpec = R"({"type":"conductor","eta":1,"k":1e8})";
 
 // Parses --model: registry types joined by '+' ("lambertian+ngan-cook-torrance"), where
 // any part may be a JSON object instead of a name ({"type": "conductor", "distribution":

@@ -17,6 +17,7 @@
 #include "materials/bsdf/conductor.h"
 #include "materials/bsdf/cook_torrance.h"
 #include "materials/bsdf/disney.h"
+#include "materials/bsdf/edge_tint.h"
 #include "materials/bsdf/eon.h"
 #include "materials/bsdf/lafortune.h"
 #include "materials/bsdf/lambertian.h"
@@ -159,6 +160,25 @@ template <template <typename> class Distribution> struct ConductorKernel {
     terms[0] = microfacetConductorEval<T>(Distribution<T>(s[0], s[1]), promoted<T>(eta), promoted<T>(k),
                                           promoted<T>(wi), promoted<T>(wo));
     rest = RgbT<T>(T(0));
+  }
+};
+
+// The microfacet conductor whose complex index is fitted: per channel the normal-incidence
+// reflectance f0 and the edge tint (materials/bsdf/edge_tint.h, Gulbrandsen 2014), which
+// determine (eta, k) one-to-one and, unlike (eta, k) themselves, are not nearly degenerate
+// (many (eta, k) pairs share one f0). No linear term: the Fresnel factor carries the colour.
+// slots: alpha_x, alpha_y, f0 (rgb), edge tint (rgb).
+template <template <typename> class Distribution> struct FittedIndexConductorKernel {
+  static constexpr int Slots = 8, Terms = 0;
+  template <typename T>
+  void eval(const T* s, const Vec3d& wi, const Vec3d& wo, RgbT<T>*, RgbT<T>& rest) const {
+    RgbT<T> eta, k;
+    for (int c = 0; c < 3; ++c) {
+      const ComplexIndexT<T> index = indexFromReflectanceAndEdgeTint(s[2 + c], s[5 + c]);
+      eta[c] = index.eta;
+      k[c] = index.k;
+    }
+    rest = microfacetConductorEval<T>(Distribution<T>(s[0], s[1]), eta, k, promoted<T>(wi), promoted<T>(wo));
   }
 };
 

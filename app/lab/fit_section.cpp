@@ -36,26 +36,36 @@ std::optional<double> truthOf(const LabMaterial& material, const FitModel& model
 
 std::string relativeErrorText(const FitResult& r) { return html::rgb(r.relativeError); }
 
-std::string summaryTable(const MaterialFits& fits) {
+std::string summaryTable(const MaterialFits& fits,
+                         const std::map<std::string, std::string>& renderDifferences) {
   std::string head;
   for (const char* column : {"model family", "parameters", "relative error (r, g, b)", "rms (r, g, b)",
-                             "iterations", "seconds", "fit"})
+                             "renders: mean |material - fit|", "iterations", "seconds", "fit"})
     head += html::textElement("th", column);
   std::string body;
   for (const FamilyFit& f : fits.families) {
     const FitResult& r = f.result;
-    body +=
-        html::element("tr",
-                      html::element("td", html::textElement("b", f.name) + html::element("br", "") +
-                                              html::textElement("code", f.spec)) +
-                          html::textElement("td", std::to_string(r.parameters.size()), {{"class", "num"}}) +
-                          html::textElement("td", relativeErrorText(r), {{"class", "num"}}) +
-                          html::textElement("td", html::rgb(r.rms), {{"class", "num"}}) +
-                          html::textElement("td", std::to_string(r.final.iterations), {{"class", "num"}}) +
-                          html::textElement("td", html::number(r.seconds, 3), {{"class", "num"}}) +
-                          html::textElement("td", f.verdict.good ? "GOOD" : "POOR",
-                                            {{"class", f.verdict.good ? "verdict pass" : "verdict fail"}}),
-                      {{"class", f.verdict.good ? "" : "failed"}});
+    const FitQuality quality = fitQuality(f);
+    const auto rendered = renderDifferences.find(f.name);
+    const bool poor = quality.grade == "poor";
+    body += html::element(
+        "tr",
+        html::element("td", html::textElement("b", f.name) + html::element("br", "") +
+                                html::textElement("code", f.spec)) +
+            html::textElement("td", std::to_string(r.parameters.size()), {{"class", "num"}}) +
+            html::textElement("td", relativeErrorText(r), {{"class", "num"}}) +
+            html::textElement("td", html::rgb(r.rms), {{"class", "num"}}) +
+            html::textElement("td", rendered == renderDifferences.end() ? "-" : rendered->second,
+                              {{"class", "num"}}) +
+            html::textElement("td", std::to_string(r.final.iterations), {{"class", "num"}}) +
+            html::textElement("td", html::number(r.seconds, 3), {{"class", "num"}}) +
+            html::element("td",
+                          html::textElement("b", quality.grade) + html::element("br", "") +
+                              html::textElement("span", quality.reason, {{"class", "small"}}),
+                          {{"class", poor                       ? "verdict fail"
+                                     : quality.grade == "close" ? "verdict pass"
+                                                                : "verdict"}}),
+        {{"class", poor ? "failed" : ""}});
   }
   return html::element("table",
                        html::element("thead", html::element("tr", head)) + html::element("tbody", body),
@@ -96,7 +106,10 @@ std::string parameterTable(const LabMaterial& material, const FamilyFit& f) {
   if (!f.result.covarianceAvailable) notes += "The covariance is not available: no error bars. ";
   for (const std::string& direction : f.result.unidentified)
     notes += "Rank deficient: " + direction + " cannot be determined from the data. ";
-  for (const std::string& problem : f.verdict.problems) notes += "POOR: " + problem + ". ";
+  const FitQuality quality = fitQuality(f);
+  if (quality.grade != "close") notes += quality.grade + ": " + quality.reason + ". ";
+  for (const std::string& problem : f.verdict.problems)
+    notes += "Not written by `scatterlab fit`: " + problem + ". ";
   return html::element("table",
                        html::element("thead", html::element("tr", head)) + html::element("tbody", body),
                        {{"class", "rows parameters"}}) +
@@ -133,6 +146,18 @@ Chart sliceChart(const std::string& id, const MeasuredSlice& slice, const Family
 
 }  // namespace
 
+FitQuality fitQuality(const FamilyFit& fit) {
+  const FitResult& r = fit.result;
+  if (r.x.empty()) return {"poor", "not fitted: no data"};
+  if (!r.final.converged) return {"poor", "did not converge (" + r.final.termination + ")"};
+  if (!fit.written.material) return {"poor", "no registry form: " + fit.written.problem};
+  const double worst = std::max({r.relativeError.x, r.relativeError.y, r.relativeError.z});
+  const std::string error = "worst channel's relative error " + html::number(worst, 3);
+  if (!(worst <= 0.3)) return {"poor", error + " > 0.3"};
+  if (!(worst <= 0.1)) return {"approximate", error + " in (0.1, 0.3]"};
+  return {"close", error + " <= 0.1"};
+}
+
 Rgb evaluateFit(const FamilyFit& fit, const Vec3d& wi, const Vec3d& wo) {
   double value[3];
   fit.model->evaluate<false>(fit.result.x.data(), wi, wo, value, nullptr);
@@ -142,9 +167,17 @@ Rgb evaluateFit(const FamilyFit& fit, const Vec3d& wi, const Vec3d& wo) {
 MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& settings,
                          const ProgressCallback& progress) {
   MaterialFits fits;
-  MerlSampleCounts counts;
-  const BrdfSamples all = samplesFromMerl(*material.table, &counts);
-  fits.usableCells = counts.usable;
+  BrdfSamples all;
+  if (material.table) {
+    MerlSampleCounts counts;
+    all = samplesFromMerl(*material.table, &counts);
+    fits.usableCells = counts.usable;
+  } else {
+    RglSampleCounts counts;
+    all = samplesFromRgl(*material.rgl, &counts);
+    fits.usableCells = counts.usable;
+    fits.rglPairs = true;
+  }
   const BrdfSamples samples = stratifiedSubset(all, settings.fitSamples, settings.seed);
   fits.fittedSamples = samples.size();
   fits.options.metric = Metric::Ngan;
@@ -181,25 +214,36 @@ MaterialFits fitMaterial(const LabMaterial& material, const LabSettings& setting
   return fits;
 }
 
-ReportSection fitSection(const LabMaterial& material, const LabSettings& settings, const MaterialFits& fits) {
+ReportSection fitSection(const LabMaterial& material, const LabSettings& settings, const MaterialFits& fits,
+                         const std::map<std::string, std::string>& renderDifferences) {
   ReportSection section;
   section.id = "fits";
   section.title = "Fits of the classic models";
-  const MeasuredSlice slice = sliceAtPhiDiff(*material.table, settings.slicePhiDiffDeg);
-  std::string html =
-      html::textElement("p",
-                        "Metric " + describe(fits.options.metric) +
-                            ", per sample and channel, both orderings of each cell. Fitted on " +
-                            (fits.fittedSamples == fits.usableCells
-                                 ? "all " + std::to_string(fits.usableCells) + " usable cells"
-                                 : "a stratified subset of " + std::to_string(fits.fittedSamples) +
-                                       " of the " + std::to_string(fits.usableCells) + " usable cells") +
-                            " (missing cells are left out). Error bars: standard deviations from "
-                            "ceres::Covariance scaled by cost / (N - p); "
-                            "a fit is GOOD when Ceres converged, every channel's relative error is at most " +
-                            html::number(DefaultMaxRelativeError) + " and the sum has a registry form.",
-                        {{"class", "small"}});
-  html += summaryTable(fits);
+  const MeasuredSlice slice = material.table ? sliceAtPhiDiff(*material.table, settings.slicePhiDiffDeg)
+                                             : sliceAtPhiDiff(*material.bsdf, settings.slicePhiDiffDeg);
+  const std::string unit = fits.rglPairs ? "direction pairs the file tabulates" : "usable cells";
+  std::string html = html::textElement(
+      "p",
+      "Metric " + describe(fits.options.metric) + ", per sample and channel, both orderings of each " +
+          (fits.rglPairs ? "pair" : "cell") + ". Fitted on " +
+          (fits.fittedSamples == fits.usableCells
+               ? "all " + std::to_string(fits.usableCells) + " " + unit
+               : "a stratified subset of " + std::to_string(fits.fittedSamples) + " of the " +
+                     std::to_string(fits.usableCells) + " " + unit) +
+          (fits.rglPairs
+               ? " (every node of the file's colour grid at every tabulated incident direction, mapped "
+                 "through its vndf warp, weight 1 each)"
+               : " (missing cells are left out)") +
+          ". How far each family is from the data: the relative error in the metric per channel (rms "
+          "residual "
+          "over rms data) and the renders' relative mean |material - fit| on the sphere. Grade: close when "
+          "the "
+          "worst channel's relative error is at most 0.1, approximate up to 0.3, poor above, or when Ceres "
+          "did "
+          "not converge or the sum has no registry form. Error bars: standard deviations from "
+          "ceres::Covariance scaled by cost / (N - p).",
+      {{"class", "small"}});
+  html += summaryTable(fits, renderDifferences);
   std::string charts;
   json familiesJson = json::array();
   for (size_t i = 0; i < fits.families.size(); ++i) {
@@ -214,12 +258,17 @@ ReportSection fitSection(const LabMaterial& material, const LabSettings& setting
                             {"spec", f.spec},
                             {"fit", toJson(f.result, *f.model, fits.options)},
                             {"material", f.written.material ? *f.written.material : json()},
-                            {"verdict", f.verdict.good ? "good" : "poor"},
+                            {"quality", fitQuality(f).grade},
+                            {"quality_reason", fitQuality(f).reason},
+                            {"render_differences",
+                             renderDifferences.count(f.name) ? json(renderDifferences.at(f.name)) : json()},
+                            {"written_by_fit_command", f.verdict.good},
                             {"problems", f.verdict.problems}});
   }
   html += html::element("div", charts, {{"class", "chart-grid"}});
   section.html = std::move(html);
   section.data = {{"metric", toString(fits.options.metric)},
+                  {"data", fits.rglPairs ? "rgl tabulated pairs" : "merl cells"},
                   {"usable_cells", fits.usableCells},
                   {"fitted_samples", fits.fittedSamples},
                   {"families", familiesJson}};

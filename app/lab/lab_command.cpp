@@ -3,6 +3,7 @@
 #include <chrono>
 #include <ctime>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -88,21 +89,31 @@ class MaterialReporter {
            html::rgb(Rgb(first[0].get<double>(), first[1].get<double>(), first[2].get<double>()))});
     }
     report_.sections.push_back(std::move(plots));
-    if (m_.table) {
+    if (hasMeasuredData()) {
       ReportSection measured =
           timer_.time("measured", m_.name, [&] { return measuredSection(m_, settings_, dir_); });
-      const double reachable = measured.data["reachable_cells"].get<double>();
-      const double missing = measured.data["missing_reachable_cells"].get<double>();
-      report_.keyNumbers.push_back(
-          {"missing measurements",
-           html::number(100.0 * missing / std::max(reachable, 1.0), 3) + "% of the reachable cells"});
+      if (m_.table) {
+        const double reachable = measured.data["reachable_cells"].get<double>();
+        const double missing = measured.data["missing_reachable_cells"].get<double>();
+        report_.keyNumbers.push_back(
+            {"missing measurements",
+             html::number(100.0 * missing / std::max(reachable, 1.0), 3) + "% of the reachable cells"});
+      } else {
+        report_.keyNumbers.push_back(
+            {"RGL file",
+             std::to_string(measured.data["tabulated_pairs"].get<size_t>()) + " tabulated pairs"});
+      }
       report_.sections.push_back(std::move(measured));
-      addFitSection();
+      addFits();
     }
   }
 
-  void addFitSection() {
+  bool hasMeasuredData() const { return m_.table || m_.rgl; }
+
+  // The fits now; their section once the renders exist, which it quotes (addRendersSection).
+  void addFits() {
     fits_ = timer_.time("fit", m_.name, [&] { return fitMaterial(m_, settings_, progress_); });
+    fitSectionIndex_ = report_.sections.size();
     report_.sections.push_back(fitSection(m_, settings_, fits_));
     const FamilyFit* best = nullptr;
     const auto meanError = [](const FamilyFit& f) {
@@ -112,8 +123,8 @@ class MaterialReporter {
       if (!f.result.x.empty() && (!best || meanError(f) < meanError(*best))) best = &f;
     if (best)
       report_.keyNumbers.push_back({"best fit", best->name + ", mean relative error " +
-                                                    html::number(meanError(*best), 3) +
-                                                    (best->verdict.good ? "" : " (POOR)")});
+                                                    html::number(meanError(*best), 3) + " (" +
+                                                    fitQuality(*best).grade + ")"});
   }
 
   void addSubsurfaceSection() {
@@ -141,7 +152,8 @@ class MaterialReporter {
   // Every material goes to the renderer, which decides what it can render (renders_section.h).
   void addRendersSection() {
     ReportSection renders = timer_.time("render", m_.name, [&] {
-      return rendersSection(m_, m_.table ? &fits_ : nullptr, settings_, environments_, dir_, progress_);
+      return rendersSection(m_, hasMeasuredData() ? &fits_ : nullptr, settings_, environments_, dir_,
+                            progress_);
     });
     // Samples the film dropped (not finite or negative) fail the material, as a failed check.
     if (const uint64_t dropped = renders.data.value("dropped_samples", uint64_t(0)); dropped > 0) {
@@ -150,6 +162,8 @@ class MaterialReporter {
       report_.keyNumbers.push_back(
           {"renders", std::to_string(dropped) + " samples dropped (not finite or negative)"});
     }
+    if (fitSectionIndex_)
+      report_.sections[*fitSectionIndex_] = fitSection(m_, settings_, fits_, fitRenderDifferences(renders));
     if (const std::string refusal = renderRefusal(renders); !refusal.empty())
       report_.keyNumbers.push_back({"renders", "not rendered: " + refusal});
     if (const std::string closest = closestFitInRenders(renders); !closest.empty())
@@ -166,6 +180,7 @@ class MaterialReporter {
   ProgressCallback progress_;
   MaterialReport report_;
   MaterialFits fits_;
+  std::optional<size_t> fitSectionIndex_;
 };
 
 // The command as the user could type it again (materials in single quotes).
@@ -210,7 +225,8 @@ CLI::App* addLabCommand(CLI::App& app, LabCommandOptions& options) {
       "with its chi-square maps, lobes, albedo, measured slices, fits and renders; none given: a showcase");
   command->add_option(
       "material", options.materials,
-      "Materials: inline JSON, JSON files, or MERL .binary files; none: the built-in showcase");
+      "Materials: inline JSON, JSON files, or measured files (MERL .binary, RGL .bsdf, told apart by "
+      "content); none: the built-in showcase");
   command->add_option("--out", options.out, "Report directory, replaced whole when the report is complete")
       ->type_name("DIR")
       ->capture_default_str();

@@ -7,6 +7,7 @@
 #include "app/lab/staged_directory.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/core/quoted.h"
+#include "materials/measured/measured_file.h"
 #include "materials/measured/tabulated_brdf.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
@@ -28,18 +29,21 @@ LabMaterial loadMeasured(std::string name, const fs::path& file) {
   try {
     return measuredLabMaterial(std::move(name), file, std::make_shared<const MerlTable>(readMerl(file)));
   } catch (const MerlError& error) {
-    // The same words as the registry's measured entry.
-    throw MaterialError("material key \"file\": " + std::string(error.what()) +
-                        "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes)");
+    throw MaterialError(measuredFileProblem(error.what()));
   }
 }
 
+// A MERL table or an RGL file, told apart by content.
+LabMaterial loadMeasuredFile(std::string name, const fs::path& file) {
+  return isTensorFile(file) ? rglLabMaterial(std::move(name), file) : loadMeasured(std::move(name), file);
+}
+
 LabMaterial fromDescription(const std::string& name, const json& material) {
-  // A measured description goes through the registry's validation, then the table is read
-  // once and kept (its slices and fits need the table itself, not only the model).
+  // A measured description goes through the registry's validation, then the file is read
+  // once and kept (its slices and fits need the data itself, not only the model).
   if (material.is_object() && material.value("type", std::string()) == "measured") {
     const json completed = completeMaterial(material);
-    LabMaterial loaded = loadMeasured(name, completed.at("file").get<std::string>());
+    LabMaterial loaded = loadMeasuredFile(name, completed.at("file").get<std::string>());
     loaded.description = completed;
     return loaded;
   }
@@ -69,6 +73,24 @@ LabMaterial measuredLabMaterial(std::string name, const fs::path& file,
   return m;
 }
 
+LabMaterial rglLabMaterial(std::string name, const fs::path& file) {
+  std::unique_ptr<RglBrdf> brdf;
+  try {
+    brdf = readRglBrdf(file);
+  } catch (const TensorFileError& error) {
+    throw MaterialError(measuredFileProblem(error.what()));
+  }
+  LabMaterial m;
+  m.name = std::move(name);
+  m.kind = LabMaterialKind::Measured;
+  m.description = json{{"type", "measured"}, {"file", file.string()}};
+  m.rgl = brdf.get();
+  m.about =
+      "RGL measured BRDF " + file.string() + (brdf->description().empty() ? "" : ": " + brdf->description());
+  m.bsdf = std::move(brdf);
+  return m;
+}
+
 LabMaterial describedLabMaterial(std::string name, const json& material) {
   LabMaterial m;
   m.name = std::move(name);
@@ -85,8 +107,8 @@ LabMaterial describedLabMaterial(std::string name, const json& material) {
 }
 
 LabMaterial loadLabMaterial(const std::string& argument) {
-  if (!isInlineMaterial(argument) && endsWith(argument, ".binary"))
-    return loadMeasured(fs::path(argument).stem().string(), argument);
+  if (!isInlineMaterial(argument) && measuredFormatOf(argument))
+    return loadMeasuredFile(fs::path(argument).stem().string(), argument);
   const json material = loadMaterialArgument(argument);
   if (isInlineMaterial(argument)) {
     const std::string type =

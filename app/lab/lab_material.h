@@ -1,6 +1,7 @@
 // One material of a lab report: what it is, built once, with everything its sections need.
-// From the command line a MATERIAL is inline JSON, a JSON file, or a MERL table (a path ending
-// in .binary, short for {"type": "measured", "file": PATH}).
+// From the command line a MATERIAL is inline JSON, a JSON file, or a measured file: a MERL table
+// or an RGL .bsdf file (told by content: materials/measured/measured_file.h), short for
+// {"type": "measured", "file": PATH}.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "materials/bsdf/bsdf.h"
 #include "materials/bssrdf/subsurface_material.h"
 #include "materials/measured/merl_io.h"
+#include "materials/measured/rgl_brdf.h"
 
 namespace scatterlab {
 
@@ -27,7 +29,8 @@ struct LabMaterial {
   LabMaterialKind kind = LabMaterialKind::Analytic;
   nlohmann::json description;                    // completed: every default filled in
   std::unique_ptr<BsdfModel> bsdf;               // Analytic and Measured
-  std::shared_ptr<const MerlTable> table;        // Measured: the table as stored
+  std::shared_ptr<const MerlTable> table;        // Measured MERL table: the table as stored
+  const RglBrdf* rgl = nullptr;                  // Measured RGL file: the model (owned by bsdf)
   std::optional<SubsurfaceMaterial> subsurface;  // Subsurface
   // Measured-style tables made by the lab: the models whose sum the table holds (a published
   // fit's Lambertian and lobe), shown as the ground truth next to the fits.
@@ -41,6 +44,9 @@ LabMaterial loadLabMaterial(const std::string& argument);
 // A measured material from a table already in memory (the showcase's generated tables).
 LabMaterial measuredLabMaterial(std::string name, const std::filesystem::path& file,
                                 std::shared_ptr<const MerlTable> table);
+
+// A measured material from an RGL file; throws MaterialError naming the file and field.
+LabMaterial rglLabMaterial(std::string name, const std::filesystem::path& file);
 
 // Any registry material (analytic or subsurface) under a name.
 LabMaterial describedLabMaterial(std::string name, const nlohmann::json& material);

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fitting/fit_model.h"
+
 namespace scatterlab {
 
 namespace {
@@ -19,9 +21,10 @@ LabSettings common(uint64_t seed) {
   s.kit.seed = seed;
   s.albedoAnglesDeg = albedoAngles();
   s.fitFamilies = {{"Lambert + Cook-Torrance (Ngan)", "lambertian+ngan-cook-torrance"},
-                   {"Lambert + GGX", "lambertian+conductor"},
+                   {"Lambert + GGX", std::string("lambertian+") + fitting::WhiteConductorSpec},
                    {"Lambert + Ward (Ngan)", "lambertian+ngan-ward"},
-                   {"Blinn-Phong", "blinn-phong"}};
+                   {"Blinn-Phong", "blinn-phong"},
+                   {"GGX conductor, index fitted", "conductor"}};
   return s;
 }
 

@@ -11,13 +11,14 @@
 // albedo curve            19 angles, quadrature on      19 angles, 32 x 64 cells, 1e5 probes
 //                         16 x 32 cells, 2e4 probes
 // random walk             2e5 paths per channel         2e6 paths per channel
-// fits (metric ngan)      Lambert + Cook-Torrance (Ngan), + GGX, + Ward (Ngan); Blinn-Phong
-//                         on a 30,000-cell stratified   on every usable cell (about 1e6)
-//                         subset, 128 grid points,      256 grid points, 3 starts
-//                         2 starts
+// fits (metric ngan)      Lambert + Cook-Torrance (Ngan), + GGX, + Ward (Ngan); Blinn-Phong;
+//                         a GGX conductor with its index fitted
+//                         on a 30,000-cell stratified   on every usable cell (about 1e6 of a
+//                         subset, 128 grid points,      MERL table, 7,000 pairs of an RGL file),
+//                         2 starts                      256 grid points, 3 starts
 // renders (2 maps; a      160 x 160, 64 spp             256 x 256, 256 spp
 // measured material
-// and its 4 fits each)
+// and its 5 fits each)
 // preview scene (the      128 x 96, 32 spp              256 x 192, 128 spp
 // material alone, first map)
 #pragma once

@@ -113,6 +113,18 @@ std::vector<LabMaterial> showcaseLabMaterials(const fs::path& scratch, PhaseTime
     materials.push_back(measuredStyle(cache, "alum-bronze", "metal", progress));
   });
 
+  // Two real measurements of the RGL database (data/rgl, CC0).
+  const fs::path rgl = fs::path(SCATTERLAB_DATA_DIR) / "rgl";
+  materials.push_back(rglLabMaterial("rgl-ibiza-sunset-vinyl", rgl / "cc_ibiza_sunset_rgb.bsdf"));
+  materials.back().about =
+      "Real measurement (RGL database, Dupuy & Jakob 2018): TeckWrap vinyl wrapping film \"Ibiza Sunset\", a "
+      "glossy coloured film; isotropic, RGB (data/rgl/cc_ibiza_sunset_rgb.bsdf)";
+  materials.push_back(rglLabMaterial("rgl-green-acrylic-felt", rgl / "acrylic_felt_green_rgb.bsdf"));
+  materials.back().about =
+      "Real measurement (RGL database, Dupuy & Jakob 2018): green acrylic felt, a rough fabric; isotropic, "
+      "RGB "
+      "(data/rgl/acrylic_felt_green_rgb.bsdf)";
+
   materials.push_back(describedLabMaterial(
       "skin-burley", json{{"type", "subsurface"}, {"profile", "burley"}, {"medium", "Skin1"}}));
   materials.back().about =

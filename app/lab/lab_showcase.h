@@ -1,5 +1,6 @@
 // The materials `scatterlab lab` reports on when given none: an analytic conductor, a rough
-// plastic, a measured-style paint and a measured-style metal, and a subsurface material.
+// plastic, a measured-style paint and a measured-style metal, two real measurements of the RGL
+// database (data/rgl: a glossy vinyl film and a felt), and a subsurface material.
 //
 // The two measured-style tables are synthesised (materials/measured/measurement_synthesis.h)
 // from the published Ngan et al. 2005 Cook-Torrance fits of MERL's gold-metallic-paint and

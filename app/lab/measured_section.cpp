@@ -48,14 +48,17 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
   ReportSection section;
   section.id = "measured";
   section.title = "Measured data";
-  const MerlTable& table = *material.table;
-  const MeasuredSlice slice = sliceAtPhiDiff(table, settings.slicePhiDiffDeg);
+  // A MERL table shows its cells as stored; an RGL file, evaluated at the same cell centres.
+  const MeasuredSlice slice = material.table ? sliceAtPhiDiff(*material.table, settings.slicePhiDiffDeg)
+                                             : sliceAtPhiDiff(*material.bsdf, settings.slicePhiDiffDeg);
+  const std::string cells = material.table ? "table cells" : "the file at MERL cell centres";
   const SliceImageScale scale = writeSliceImage(materialDir / "slice.png", slice);
   writeColourBar(materialDir / "slice_scale.png");
 
   Chart chart;
   chart.id = material.folder + "-slices";
-  chart.title = "f along theta_h at phi_d = " + html::degrees(slice.phiDiffDeg) + " (luminance, table cells)";
+  chart.title =
+      "f along theta_h at phi_d = " + html::degrees(slice.phiDiffDeg) + " (luminance, " + cells + ")";
   chart.xLabel = "theta_h (deg)";
   chart.yLabel = "f (1/sr)";
   chart.logY = true;
@@ -99,7 +102,44 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
                   html::escape(missing ? std::to_string(missing) + " missing cells in this slice, in magenta"
                                        : "no missing cells in this slice")),
       {{"class", "slice-figure"}});
-  const TableCoverage coverage = tableCoverage(table);
+  if (material.rgl) {
+    const RglBrdf& rgl = *material.rgl;
+    size_t belowHorizon = 0;
+    const size_t pairs = rgl.tabulatedPairs(&belowHorizon).size();
+    const std::string summary = html::textElement(
+        "p",
+        "RGL tensor file" + (rgl.description().empty() ? std::string() : " \"" + rgl.description() + "\"") +
+            ": " +
+            (rgl.isotropic() ? "isotropic"
+                             : "anisotropic (reduction " + std::to_string(rgl.reduction()) + ")") +
+            ", " +
+            (rgl.spectral() ? std::to_string(rgl.wavelengthCount()) + " wavelengths reduced to RGB" : "RGB") +
+            ", " + std::to_string(rgl.incidentAzimuths()) + " x " + std::to_string(rgl.incidentElevations()) +
+            " incident directions (theta_i " + html::degrees(degrees(rgl.thetaMin())) + " to " +
+            html::degrees(degrees(rgl.thetaMax())) + "), vndf " + std::to_string(rgl.vndfRows()) + " x " +
+            std::to_string(rgl.vndfColumns()) + ", colour " + std::to_string(rgl.colourRows()) + " x " +
+            std::to_string(rgl.colourColumns()) + ": " + std::to_string(pairs) +
+            " tabulated direction pairs above the horizon (" + std::to_string(belowHorizon) +
+            " more below it). The image and the curves evaluate the file at the MERL cell centres "
+            "(materials/measured/rgl_brdf.h); nothing is missing.",
+        {{"class", "small"}});
+    section.html = summary + html::element("div", image + chartFigure(chart), {{"class", "chart-grid"}});
+    section.data = {{"phi_d_cell", slice.phiDiffCell},
+                    {"phi_d_deg", slice.phiDiffDeg},
+                    {"slice_image", "slice.png"},
+                    {"slice_data", "slice.json"},
+                    {"slice_log10_range", {scale.log10Min, scale.log10Max}},
+                    {"format", "rgl"},
+                    {"description", rgl.description()},
+                    {"isotropic", rgl.isotropic()},
+                    {"spectral", rgl.spectral()},
+                    {"incident_grid", {rgl.incidentAzimuths(), rgl.incidentElevations()}},
+                    {"tabulated_pairs", pairs},
+                    {"pairs_below_horizon", belowHorizon},
+                    {"slices_along_theta_h", slicesJson}};
+    return section;
+  }
+  const TableCoverage coverage = tableCoverage(*material.table);
   const std::string summary = html::textElement(
       "p",
       std::to_string(coverage.missingReachable) + " of the " + std::to_string(coverage.reachable) +
@@ -116,6 +156,7 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
                   {"slice_image", "slice.png"},
                   {"slice_data", "slice.json"},
                   {"slice_log10_range", {scale.log10Min, scale.log10Max}},
+                  {"format", "merl"},
                   {"cells", merl::CellCount},
                   {"reachable_cells", coverage.reachable},
                   {"missing_reachable_cells", coverage.missingReachable},

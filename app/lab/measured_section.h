@@ -1,7 +1,8 @@
-// The measured table itself: the theta_h / theta_d image slice at the chosen phi_d
+// The measured data itself: the theta_h / theta_d image slice at the chosen phi_d
 // (measured_slice.h) with its colour scale, and f along theta_h at three theta_d on a log
 // scale, so that the highlight, the Fresnel rise toward grazing theta_d and any missing
-// measurements can be seen.
+// measurements can be seen. A MERL table shows its stored cells and how many are missing; an
+// RGL file is evaluated at the same cell centres, with what its grids hold.
 #pragma once
 
 #include <filesystem>

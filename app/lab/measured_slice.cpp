@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/lab/lobe_curves.h"
+#include "materials/measured/half_diff.h"
 #include "materials/measured/merl_format.h"
 #include "materials/measured/tabulated_brdf.h"
 #include "validation/heatmap.h"
@@ -28,6 +29,25 @@ MeasuredSlice sliceAtPhiDiff(const MerlTable& table, double phiDiffDeg) {
                        : !isReachableCell(cell) ? CellState::Unreachable
                                                 : CellState::Measured;
       slice.value[k] = slice.state[k] == CellState::Measured ? table.rgb(cell) : Rgb(0.0);
+    }
+  return slice;
+}
+
+MeasuredSlice sliceAtPhiDiff(const BsdfModel& model, double phiDiffDeg) {
+  MeasuredSlice slice;
+  slice.phiDiffCell = merl::clampCell(merl::phiDiffCoordinate(phiDiffDeg * Pi / 180.0), merl::PhiDiffCells);
+  slice.phiDiffDeg = merl::phiDiffAt(slice.phiDiffCell + 0.5) * 180.0 / Pi;
+  slice.value.resize(size_t(merl::ThetaHalfCells) * merl::ThetaDiffCells);
+  slice.state.resize(slice.value.size());
+  const double phiDiff = merl::phiDiffAt(slice.phiDiffCell + 0.5);
+  for (int h = 0; h < merl::ThetaHalfCells; ++h)
+    for (int d = 0; d < merl::ThetaDiffCells; ++d) {
+      const size_t k = size_t(h) * merl::ThetaDiffCells + size_t(d);
+      const auto [wi, wo] =
+          directionsFromHalfDiff(merl::thetaHalfAt(h + 0.5), 0.0, merl::thetaDiffAt(d + 0.5), phiDiff);
+      const bool reachable = wi.z > 0 && wo.z > 0;
+      slice.state[k] = reachable ? CellState::Measured : CellState::Unreachable;
+      slice.value[k] = reachable ? model.eval(wi, wo) : Rgb(0.0);
     }
   return slice;
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "materials/bsdf/bsdf.h"
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
@@ -30,6 +31,9 @@ struct MeasuredSlice {
 
 // The cells of the phi_d cell that holds `phiDiffDeg` (in [0, 180)).
 MeasuredSlice sliceAtPhiDiff(const MerlTable& table, double phiDiffDeg);
+// The same cells of a model (a measurement in another format: an RGL file), evaluated at the
+// cell centres (phi_h = 0); cells no reflection above the surface reaches are Unreachable.
+MeasuredSlice sliceAtPhiDiff(const BsdfModel& model, double phiDiffDeg);
 
 // Cell centres in degrees (theta_h is the non-linear MERL axis).
 double thetaHalfCentreDeg(int cell);

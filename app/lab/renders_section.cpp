@@ -391,16 +391,33 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
   return section;
 }
 
-std::string closestFitInRenders(const ReportSection& renders) {
-  // Differences are listed map by map; gather each fit's in order.
-  if (!renders.data.contains("differences")) return "";
+namespace {
+
+// The differences, listed map by map in the data, gathered per fit in order.
+std::vector<std::pair<std::string, std::vector<const json*>>> differencesByFit(const ReportSection& renders) {
   std::vector<std::pair<std::string, std::vector<const json*>>> fits;
+  if (!renders.data.contains("differences")) return fits;
   for (const json& d : renders.data.at("differences")) {
     const std::string fit = d.value("fit", "");
     auto it = std::find_if(fits.begin(), fits.end(), [&](const auto& f) { return f.first == fit; });
     if (it == fits.end()) it = fits.insert(fits.end(), {fit, {}});
     it->second.push_back(&d);
   }
+  return fits;
+}
+
+std::string differencesText(const std::vector<const json*>& ds) {
+  std::string text;
+  for (size_t i = 0; i < ds.size(); ++i)
+    text += (i ? ", " : "") + percent((*ds[i])["relative_mean_abs_difference"].get<double>()) + " (" +
+            (*ds[i])["environment"].get<std::string>() + ")";
+  return text;
+}
+
+}  // namespace
+
+std::string closestFitInRenders(const ReportSection& renders) {
+  const auto fits = differencesByFit(renders);
   const auto meanOf = [](const std::vector<const json*>& ds) {
     double sum = 0;
     for (const json* d : ds) sum += (*d)["relative_mean_abs_difference"].get<double>();
@@ -410,11 +427,13 @@ std::string closestFitInRenders(const ReportSection& renders) {
     return meanOf(a.second) < meanOf(b.second);
   });
   if (best == fits.end()) return "";
-  std::string text = best->first + ":";
-  for (size_t i = 0; i < best->second.size(); ++i)
-    text += (i ? ", " : " ") + percent((*best->second[i])["relative_mean_abs_difference"].get<double>()) +
-            " (" + (*best->second[i])["environment"].get<std::string>() + ")";
-  return text;
+  return best->first + ": " + differencesText(best->second);
+}
+
+std::map<std::string, std::string> fitRenderDifferences(const ReportSection& renders) {
+  std::map<std::string, std::string> out;
+  for (const auto& [fit, ds] : differencesByFit(renders)) out[fit] = differencesText(ds);
+  return out;
 }
 
 std::string renderRefusal(const ReportSection& renders) {

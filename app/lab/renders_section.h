@@ -23,6 +23,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,10 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
 // relative mean |material - fit|), with that difference per map: "Lambert + GGX: 1.5%
 // (studio), 5.1% (courtyard)"; empty without fits.
 std::string closestFitInRenders(const ReportSection& renders);
+
+// Each fit's relative mean |material - fit| on the sphere per map, "1.5% (studio), 5.1%
+// (courtyard)", by fit name; empty without fits.
+std::map<std::string, std::string> fitRenderDifferences(const ReportSection& renders);
 
 // The report's sentence for a material the renderer refused (empty when it rendered): the
 // section's data "refused" entry of the material itself.

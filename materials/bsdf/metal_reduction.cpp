@@ -30,7 +30,7 @@ std::pair<int, int> integrationRange(const Spectrum& a, const Spectrum& b) {
   const double lo = std::max({VisibleMin, a.wavelengths.front(), b.wavelengths.front()});
   const double hi = std::min({VisibleMax, a.wavelengths.back(), b.wavelengths.back()});
   const int first = int(std::ceil(lo)), last = int(std::floor(hi));
-  if (last <= first) throw std::runtime_error("metal spectra do not overlap the visible range 380-780 nm");
+  if (last <= first) throw std::runtime_error("spectra do not overlap the visible range 380-780 nm");
   return {first, last};
 }
 
@@ -96,13 +96,27 @@ Spectrum readSpd(const std::filesystem::path& path) {
   return parseSpd(in, path.string());
 }
 
-Rgb normalIncidenceReflectanceRgb(const Spectrum& eta, const Spectrum& k) {
-  const auto [first, last] = integrationRange(eta, k);
-  const Vec3d xyz = integrate<Vec3d>(first, last, [&](double lambda) {
-    return normalIncidenceReflectance(eta.at(lambda), k.at(lambda)) * cieXyzMatching(lambda);
-  });
+namespace {
+
+// Step 2 for a reflectance R(lambda) over [first, last] nm.
+Rgb reflectanceRgbOver(int first, int last, const std::function<double(double)>& reflectance) {
+  const Vec3d xyz = integrate<Vec3d>(
+      first, last, [&](double lambda) { return reflectance(lambda) * cieXyzMatching(lambda); });
   const Vec3d whiteXyz = integrate<Vec3d>(first, last, [](double lambda) { return cieXyzMatching(lambda); });
   return xyzToLinearRec709(xyz) / xyzToLinearRec709(whiteXyz);
+}
+
+}  // namespace
+
+Rgb normalIncidenceReflectanceRgb(const Spectrum& eta, const Spectrum& k) {
+  const auto [first, last] = integrationRange(eta, k);
+  return reflectanceRgbOver(
+      first, last, [&](double lambda) { return normalIncidenceReflectance(eta.at(lambda), k.at(lambda)); });
+}
+
+Rgb reflectanceRgb(const Spectrum& reflectance) {
+  const auto [first, last] = integrationRange(reflectance, reflectance);
+  return reflectanceRgbOver(first, last, [&](double lambda) { return reflectance.at(lambda); });
 }
 
 MetalIor reduceMetalSpectra(const char* name, const Spectrum& eta, const Spectrum& k) {

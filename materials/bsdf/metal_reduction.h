@@ -37,6 +37,12 @@ Spectrum readSpd(const std::filesystem::path& path);
 // Step 2 above: the RGB normal-incidence reflectance of the spectra.
 Rgb normalIncidenceReflectanceRgb(const Spectrum& eta, const Spectrum& k);
 
+// Step 2's colour for any reflectance spectrum (a measured BRDF's spectral samples,
+// rgl_brdf.h): RGB of R(lambda) with R = 1 giving (1, 1, 1), over the visible wavelengths the
+// spectrum covers. Linear in the spectrum's values. Throws std::runtime_error when the
+// spectrum does not overlap 380-780 nm.
+Rgb reflectanceRgb(const Spectrum& reflectance);
+
 // Step 4 above for one channel: the (eta, k) with normal-incidence reflectance `reflectance`,
 // keeping `eta` when some k >= 0 achieves it. Throws std::domain_error unless 0 <= R < 1.
 struct ComplexIndex {

@@ -72,6 +72,16 @@ size_t MerlTable::missingCount() const {
   return count;
 }
 
+bool isMerlFile(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return false;
+  std::ifstream file(path, std::ios::binary);
+  std::array<int32_t, 3> header{};
+  if (!file.read(reinterpret_cast<char*>(header.data()), merl::HeaderBytes)) return false;
+  fromLittleEndian(std::span<int32_t>(header));
+  return header == Dimensions;
+}
+
 namespace {
 
 // Values far above any measured BRDF: a mirror seen in one 1-degree cell is about 1e4 sr^-1

@@ -73,6 +73,9 @@ MerlTable parseMerl(std::span<const unsigned char> bytes, const std::filesystem:
 // The value checks alone: throws MerlError on a NaN, infinite or absurdly large value.
 // `stored` is channel-planar (3 x CellCount, or a part of it from the start).
 void checkMerlValues(std::span<const double> stored, const std::filesystem::path& path);
+// True when the file at `path` can be opened and starts with the MERL header (int32 90, 90,
+// 180, little-endian): format detection by content, whatever the rest of the file holds.
+bool isMerlFile(const std::filesystem::path& path);
 
 // Writes atomically (temporary file, then rename): a failure leaves no file behind. Throws
 // MerlError if the directory does not exist or cannot be written, or if a value is not

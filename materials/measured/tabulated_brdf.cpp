@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <memory>
 
-#include "materials/registry/material_model.h"
-
 namespace scatterlab {
 
 namespace {
@@ -153,43 +151,6 @@ std::optional<BsdfSample> TabulatedBrdf::sample(const Vec3d& wi, double uLobe, c
   s.weight = eval(wi, *wo) * (wo->z / pdf);
   s.lobe = LobeFlags::GlossyReflection;
   return s;
-}
-
-// ---------------------------------------------------------------------------------------
-// The material registry's "measured" model (materials/registry/model_list.h): the
-// parameter spec and the function that builds it.
-
-namespace {
-
-std::unique_ptr<BsdfModel> buildMeasured(const MaterialParameters& p) {
-  try {
-    return std::make_unique<TabulatedBrdf>(readMerl(p.path("file")));
-  } catch (const MerlError& error) {
-    throw MaterialError("material key \"file\": " + std::string(error.what()) +
-                        "; allowed: a MERL BRDF file (90 x 90 x 180 cells, 34992012 bytes)");
-  }
-}
-
-}  // namespace
-
-MaterialModel measuredModel() {
-  return {
-      .type = "measured",
-      .description =
-          "Measured isotropic BRDF in the MERL layout: interpolated in half/diff angles, sampled from "
-          "tabulated half-vector distributions (exact pdf)",
-      .citation =
-          "Matusik et al. 2003, A Data-Driven Reflectance Model; Rusinkiewicz 1998, A New Change of "
-          "Variables for Efficient BRDF Representation",
-      .parameters = {{.name = "file",
-                      .kind = ParameterKind::Path,
-                      .description =
-                          "MERL .binary file (`scatterlab synth` makes them); missing cells (negative) "
-                          "take the nearest measured value along theta_d",
-                      .required = true}},
-      .alternatives = {},
-      .build = buildMeasured,
-  };
 }
 
 }  // namespace scatterlab

@@ -77,9 +77,4 @@ class TabulatedBrdf final : public BsdfModel {
 // Whether a cell's centre is a reflection above the surface (wi.z > 0 and wo.z > 0 there).
 bool isReachableCell(size_t cell);
 
-struct MaterialModel;
-
-// The material registry's "measured" model (materials/registry/model_list.h).
-MaterialModel measuredModel();
-
 }  // namespace scatterlab

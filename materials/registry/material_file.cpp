@@ -7,6 +7,7 @@
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
 #include "materials/core/quoted.h"
+#include "materials/measured/measured_file.h"
 #include "materials/registry/model_list.h"
 #include "materials/registry/parameter_spec.h"
 
@@ -63,9 +64,17 @@ nlohmann::json loadMaterialArgument(const std::string& argument) {
                           "{\"type\": \"lambertian\"} (give several materials as several arguments)");
     return material;
   }
-  // A MERL table given as it is: the measured material that reads it.
-  if (argument.ends_with(".binary")) return json{{"type", "measured"}, {"file", argument}};
-  json material = parseMaterialText(readMaterialFile(argument), "material file " + inQuotes(argument));
+  // A measured file is told by its first bytes, whatever its name.
+  if (measuredFormatOf(argument)) return json{{"type", "measured"}, {"file", argument}};
+  const std::string text = readMaterialFile(argument);
+  // Neither a measured file nor JSON: say what the MERL reader found as well (a table cut
+  // short, a damaged header), not only that the text is not JSON.
+  if (!isInlineMaterial(text))
+    throw MaterialError("material file " + inQuotes(argument) +
+                        ": neither JSON (it does not start with '{') nor a measured file (" +
+                        notMeasuredReason(argument) +
+                        "); allowed: a JSON material file, a MERL .binary table or an RGL .bsdf file");
+  json material = parseMaterialText(text, "material file " + inQuotes(argument));
   const std::filesystem::path directory = std::filesystem::path(argument).parent_path();
   forEachPathParameter(material, [&](json& entry) {
     const std::filesystem::path path(entry.get<std::string>());

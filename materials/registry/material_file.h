@@ -14,15 +14,16 @@ namespace scatterlab {
 // with a message) rather than a file path.
 bool isInlineMaterial(std::string_view argument);
 
-// Parses a material argument: inline JSON when it starts with '{', the measured material of a
-// MERL table for a path ending in .binary, a JSON file otherwise. Throws MaterialError naming
-// the file (not found, not readable, over 4 MB: checked before it is read) or the source and
-// position of a parse error, nesting beyond materials/core/json_text.h's limit, or a number
-// that overflows a double (naming its key); inline JSON that is an array is refused (one
-// material per argument). The result is not validated; makeBsdf/completeMaterial do that.
-// From a file, relative values of path parameters (a measured material's "file"), at any
-// depth, are made relative to the file's directory, so a material file and its data can move
-// together.
+// Parses a material argument: inline JSON when it starts with '{'; a measured file (a MERL
+// table or an RGL file, told by content: measured/measured_file.h, whatever its name) is
+// {"type": "measured", "file": argument}; any other file is parsed as JSON. Throws
+// MaterialError naming the file (not found, not readable, over 4 MB: checked before it is
+// read) or the source and position of a parse error, nesting beyond materials/core/json_text.h's
+// limit, or a number that overflows a double (naming its key); inline JSON that is an array is
+// refused (one material per argument). The result is not validated; makeBsdf/completeMaterial
+// do that. From a file, relative values of path parameters (a measured material's "file"), at
+// any depth, are made relative to the file's directory, so a material file and its data can
+// move together.
 nlohmann::json loadMaterialArgument(const std::string& argument);
 
 // Calls `visit` with the value of every path parameter (a non-empty string) of `material` and of

@@ -21,7 +21,7 @@
 #include "materials/bsdf/thin_dielectric.h"
 #include "materials/bsdf/ward.h"
 #include "materials/bssrdf/subsurface_registry.h"
-#include "materials/measured/tabulated_brdf.h"
+#include "materials/measured/measured_file.h"
 
 namespace scatterlab {
 

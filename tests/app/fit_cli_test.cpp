@@ -11,6 +11,7 @@
 
 #include "cli_runner.h"
 #include "fit_report.h"
+#include "materials/bsdf/metals.h"
 #include "materials/measured/merl_io.h"
 #include "materials/registry/spec_validation.h"
 
@@ -77,8 +78,9 @@ TEST(FitCli, JsonReportHoldsTheParametersTheMaterialAndTheVerdict) {
 TEST(FitCli, SameResultForAnyThreadCount) {
   const auto fitWith = [&](const std::string& threads) {
     const ProcessResult run =
-        runScatterlab(std::vector<std::string>{"fit", Truth, "--model", "lambertian+conductor", "--metric",
-                                               "cube-root", "--json", "--threads", threads} +
+        runScatterlab(std::vector<std::string>{"fit", Truth, "--model",
+                                               R"(lambertian+{"type":"conductor","eta":1,"k":1e8})",
+                                               "--metric", "cube-root", "--json", "--threads", threads} +
                       Quick);
     EXPECT_EQ(run.exitCode, 0) << describe(run);
     return json::parse(run.out).at("fit").at("parameters");
@@ -104,6 +106,62 @@ TEST(FitCli, FitsANoisyMerlFileWithMissingCells) {
   // 5% log-normal noise: the roughness within 1% of the line's 0.0367.
   EXPECT_NEAR(fittedParameter(report, "ngan-cook-torrance.roughness"), 0.0367, 0.01 * 0.0367);
   fs::remove(table);
+}
+
+// A GGX copper table made by `synth`, fitted back by a conductor that names neither the metal
+// nor an index (its index fitted as f0 and edge tint): alpha and the normal-incidence
+// reflectance within 1% (the data are noise-free), from the default grid and starts.
+TEST(FitCli, CopperTableRecoversAlphaAndIndexWithoutNamingTheMetal) {
+  const fs::path table = uniquePath("copper") += ".binary";
+  const fs::path out = uniquePath("copper-fit") += ".json";
+  ASSERT_EQ(
+      runScatterlab({"synth", R"({"type":"conductor","metal":"Cu","alpha":0.17})", "--out", table.string()})
+          .exitCode,
+      0);
+  const ProcessResult run = runScatterlab({"fit", table.string(), "--model", "conductor", "--metric", "ngan",
+                                           "--samples", "30000", "--out", out.string(), "--json"});
+  ASSERT_EQ(run.exitCode, 0) << describe(run);
+  const json report = json::parse(run.out);
+  EXPECT_NEAR(parameter(report, "conductor.alpha"), 0.17, 0.01 * 0.17);
+  const MetalIor& copper = *findMetal("Cu");
+  const json written = json::parse(readFile(out));
+  const char* channel[] = {"r", "g", "b"};
+  for (int c = 0; c < 3; ++c) {
+    const auto reflectance = [](double eta, double k) {
+      return (sqr(eta - 1) + k * k) / (sqr(eta + 1) + k * k);
+    };
+    const double truth = reflectance(copper.eta[c], copper.k[c]);
+    EXPECT_NEAR(parameter(report, std::string("conductor.f0.") + channel[c]), truth, 0.01 * truth) << c;
+    // The written material holds eta and k with that reflectance, no "metal".
+    EXPECT_NEAR(reflectance(written.at("eta")[c].get<double>(), written.at("k")[c].get<double>()), truth,
+                0.01 * truth)
+        << c;
+  }
+  EXPECT_FALSE(written.contains("metal"));
+  fs::remove(table);
+  fs::remove(out);
+}
+
+// An RGL file, told by its content: fitted on the pairs it tabulates.
+TEST(FitCli, FitsAnRglFileOnItsOwnPairs) {
+  const fs::path file = fs::path(SCATTERLAB_DATA_DIR) / "rgl" / "cc_ibiza_sunset_rgb.bsdf";
+  const ProcessResult run =
+      runScatterlab(std::vector<std::string>{"fit", file.string(), "--model", "lambertian+ngan-cook-torrance",
+                                             "--metric", "ngan", "--json"} +
+                    Quick);
+  ASSERT_LE(run.exitCode, 1) << describe(run);  // a poor fit of real data is an honest outcome
+  const json report = json::parse(run.out);
+  EXPECT_EQ(report.at("data").at("kind"), "rgl");
+  // 7 tabulated elevations below 90 degrees x 32 x 32 colour nodes, less those below the horizon.
+  const size_t usable = report.at("data").at("usable_cells").get<size_t>();
+  EXPECT_EQ(usable + report.at("data").at("unreachable_cells").get<size_t>(), 7u * 32u * 32u);
+  EXPECT_GT(usable, 6000u);
+  EXPECT_TRUE(report.at("fit").at("converged").get<bool>());
+  const ProcessResult text =
+      runScatterlab(std::vector<std::string>{"fit", file.string(), "--model", "lambertian+ngan-cook-torrance",
+                                             "--metric", "ngan"} +
+                    Quick);
+  expectMentions(text.out, {"direction pairs the file tabulates", "weight 1 each", "below the horizon"});
 }
 
 TEST(FitCli, PoorFitIsReportedAndNotWritten) {
@@ -169,6 +227,15 @@ TEST(FitCli, BadInputNamesTheOptionFileOrValueAndWritesNothing) {
       {"absent.binary", "not found", "allowed"});
   expectBadInput({"fit", R"({"type":"lambertian","albedo":2})", "--model", "lambertian", "--metric", "ngan"},
                  {"albedo", "out of range"});
+  expectBadInput(fit + std::vector<std::string>{"--model", "lambertian+conductor", "--metric", "ngan"},
+                 {"--model", "fitted alone", R"({"type":"conductor","eta":1,"k":1e8})"});
+  // An RGL file cut short: the file and the field whose data runs past the end.
+  const fs::path truncated = uniquePath("truncated") += ".bsdf";
+  const std::string rgl = readFile(fs::path(SCATTERLAB_DATA_DIR) / "rgl" / "cc_ibiza_sunset_rgb.bsdf");
+  std::ofstream(truncated, std::ios::binary) << rgl.substr(0, rgl.size() / 2);
+  expectBadInput({"fit", truncated.string(), "--model", "lambertian", "--metric", "ngan", "--out", o},
+                 {truncated.string(), "field \"", "runs past the end"});
+  fs::remove(truncated);
   // Missing parents are created (as everywhere); a file in their place is found before the fit.
   const fs::path blocker = uniquePath("blocker");
   std::ofstream(blocker) << "a file";

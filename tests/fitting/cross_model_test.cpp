@@ -49,9 +49,9 @@ TEST_P(CrossModel, MicrofacetLobesBeatLambertianOnlyInEveryMetric) {
   const std::string line = GetParam();
   const std::vector<json> truth = publishedFit(line, "ngan_cooktorrance.fit");
   const BrdfSamples samples = cellSamples(GroundTruth(truth), 1);
-  const FitModel ggx(parseModelSpec("lambertian+conductor"), false);
-  const FitModel beckmann(parseModelSpec(R"(lambertian+{"type":"conductor","distribution":"beckmann"})"),
-                          false);
+  const FitModel ggx(parseModelSpec(std::string("lambertian+") + WhiteConductorSpec), false);
+  const FitModel beckmann(
+      parseModelSpec(R"(lambertian+{"type":"conductor","distribution":"beckmann","eta":1,"k":1e8})"), false);
   const FitModel lambertian(parseModelSpec("lambertian"), false);
   for (const std::string& name : metricNames()) {
     const Metric metric = *parseMetric(name);

@@ -81,8 +81,8 @@ TEST(ModelSpec, IsotropicDataTiesPairsAndLafortunesCxy) {
   EXPECT_THROW(parameter(disney, "disney.anisotropic"), std::runtime_error);
 }
 
-TEST(ModelSpec, ConductorIsAWhiteLobeWithAScaleUnlessAnIndexIsGiven) {
-  const FitModel white(parseModelSpec("lambertian+conductor"), false);
+TEST(ModelSpec, ConductorWithAGivenIndexCarriesAScale) {
+  const FitModel white(parseModelSpec(std::string("lambertian+") + WhiteConductorSpec), false);
   EXPECT_EQ(names(white),
             (std::vector<std::string>{"lambertian.albedo.r", "lambertian.albedo.g", "lambertian.albedo.b",
                                       "conductor.scale.r", "conductor.scale.g", "conductor.scale.b",

@@ -202,6 +202,21 @@ TEST(KernelGradients, Conductor) {
   expectGradientsMatch(beckmannWhite, {0.001, 0.001}, "beckmann 0.001", tinyRoughnessGeometries());
 }
 
+// The conductor with its index fitted: the derivatives through (f0, edge tint) -> (eta, k),
+// inside the family, a copper-like and a dielectric-like point. The tints stay a few per cent
+// below 1: at 1 the family ends (k^2 reaches 0, where sqrt has no derivative), and Ridders'
+// first steps (percents of the parameter) must not cross it. Not at retro-reflection: there
+// wi . h ~ 1, where F is f0 whatever the tint, so the tint's derivative is 1e-8 of the value,
+// round-off that no relative comparison can judge.
+TEST(KernelGradients, ConductorWithFittedIndex) {
+  std::vector<Geometry> where = geometries();
+  std::erase_if(where, [](const Geometry& g) { return g.name == "retro"; });
+  expectGradientsMatch(FittedIndexConductorKernel<GgxDistribution>{},
+                       {0.2, 0.2, 0.93, 0.64, 0.53, 0.95, 0.9, 0.85}, "ggx copper-like index", where);
+  expectGradientsMatch(FittedIndexConductorKernel<BeckmannDistribution>{},
+                       {0.3, 0.1, 0.05, 0.04, 0.06, 0.3, 0.5, 0.7}, "beckmann dielectric-like index", where);
+}
+
 // Every lobe on (sheen, clearcoat, metallic between 0 and 1), so every slot matters. Not at
 // retro-reflection: there the sheen's weight (1 - cos theta_d)^5 is below 1e-8, and the
 // sheen's derivatives are round-off that no relative comparison can judge.
