@@ -21,6 +21,7 @@
 #include "app/output_guard.h"
 #include "app/plugin_option.h"
 #include "app/progress.h"
+#include "app/render_agreement.h"
 #include "app/showcase.h"
 #include "app/staged_outputs.h"
 #include "materials/bssrdf/subsurface_registry.h"
@@ -28,6 +29,7 @@
 #include "materials/registry/material_file.h"
 #include "materials/registry/spec_validation.h"
 #include "validation/check_bsdf.h"
+#include "validation/chi_square.h"
 #include "validation/chi_square_images.h"
 #include "validation/negative_controls.h"
 #include "validation/subsurface_check.h"
@@ -43,6 +45,9 @@ using nlohmann::json;
 constexpr double RoughnessMismatchFactor = 1.1;
 
 constexpr uint64_t MinSamples = 1000;
+// --render-agreement: below 16 samples per pixel the pilot renders that choose the pixels
+// compared have 4 or fewer, and almost no pixel qualifies; above 2^16 one material takes hours.
+constexpr int MinRenderSpp = 16, MaxRenderSpp = 65536;
 constexpr uint64_t MaxSamples = 100'000'000'000;
 
 struct MaterialUnderTest {
@@ -163,6 +168,7 @@ json optionsJson(const CheckCommandOptions& options, const BsdfCheckOptions& kit
           {"alpha", kit.alpha},
           {"chi_square_test_count", kit.chiSquareTestCount},
           {"negative_controls", options.negativeControls},
+          {"render_agreement_spp", options.renderAgreementSpp ? json(*options.renderAgreementSpp) : json()},
           {"images", options.kit.imageDir ? json(options.kit.imageDir->string()) : json()}};
 }
 
@@ -274,6 +280,13 @@ CLI::App* addCheckCommand(CLI::App& app, CheckCommandOptions& options) {
       ->check(outputDirectoryValidator());
   command->add_flag("--negative-controls", options.negativeControls,
                     "Also run deliberately wrong samplers, which the kit must reject");
+  command
+      ->add_option("--render-agreement", options.renderAgreementSpp,
+                   "Also render each BSDF material on the preview scene by path tracing, light tracing and "
+                   "BDPT (16 x 12 pixels, this many path-traced samples per pixel; 1024 is thorough) and "
+                   "test that the renders agree pixel by pixel, which proves the material's adjoint")
+      ->type_name("SPP")
+      ->transform(integerIn(MinRenderSpp, MaxRenderSpp));
   command->add_flag("--json", options.json,
                     "Print one JSON document: completed materials, every row, the verdict");
   addPluginOption(*command);
@@ -293,6 +306,16 @@ int runCheckCommand(const CheckCommandOptions& options) {
     kit.chiSquareTestCount += material.subsurface
                                   ? subsurfaceChiSquareTestCount(*material.subsurface->profile)
                                   : chiSquareTestCount(kit);
+  // Only the path tracer renders BSSRDFs: the render agreement covers the BSDF materials.
+  size_t renderedMaterials = 0;
+  if (options.renderAgreementSpp)
+    for (const MaterialUnderTest& material : materials)
+      if (!material.subsurface) ++renderedMaterials;
+  if (options.renderAgreementSpp && renderedMaterials == 0)
+    throw InputError(
+        "--render-agreement: no BSDF material given; allowed: BSDF materials (subsurface "
+        "materials are rendered by the path tracer only, so they have no adjoint to compare)");
+  kit.chiSquareTestCount += RenderAgreementTestsPerMaterial * int(renderedMaterials);
   // The images are written into a staging directory and moved into --images DIR at the end
   // (staged_outputs.h): an interrupted or failed check leaves DIR as it was.
   StagedOutputs outputs(inputs);
@@ -309,6 +332,27 @@ int runCheckCommand(const CheckCommandOptions& options) {
     for (size_t i = 0; i < materials.size(); ++i) {
       const std::string step = "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "]";
       report.append(checkMaterial(materials[i], kit, options.negativeControls, progress.callback(step)));
+    }
+  }
+  if (options.renderAgreementSpp) {
+    if (renderedMaterials < materials.size())
+      std::cerr << "render agreement: " << materials.size() - renderedMaterials
+                << " subsurface material(s) left out (only the path tracer renders them)\n";
+    const double threshold = sidakSignificance(kit.alpha, kit.chiSquareTestCount);
+    RenderAgreementOptions renderOptions;
+    renderOptions.pathSpp = *options.renderAgreementSpp;
+    ProgressLine progress;
+    size_t done = 0;
+    for (const MaterialUnderTest& material : materials) {
+      if (material.subsurface) continue;
+      const std::string step =
+          "[render " + std::to_string(++done) + "/" + std::to_string(renderedMaterials) + "]";
+      if (const ProgressCallback show = progress.callback(step))
+        show("path, light and BDPT renders of " + material.label, 0.0);
+      const json& completed = material.completed;
+      const RenderAgreement agreement = compareEstimators([&] { return makeBsdf(completed); },
+                                                          renderAgreementSeed(material.label), renderOptions);
+      report.append(renderAgreementReport(material.label, agreement, threshold));
     }
   }
   if (kit.imageDir) outputs.commit();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct CheckCommandOptions {
   std::vector<std::string> materials;  // inline JSON or file paths; none: the showcase
   BsdfCheckOptions kit;
   bool negativeControls = false;
+  // With a value: also render each BSDF material by path tracing, light tracing and BDPT and
+  // compare the renders (app/render_agreement.h); the value is the path tracer's samples per pixel.
+  std::optional<int> renderAgreementSpp;
   bool json = false;
 };
 

@@ -41,7 +41,7 @@ TEST(Cli, HelpOfEveryCommandExitsZero) {
   }
   const ProcessResult check = runScatterlab({"check", "--help"});
   for (const char* option : {"--wi-theta", "--wi-phi", "--samples", "--grid", "--seed", "--alpha", "--images",
-                             "--negative-controls", "--json"})
+                             "--negative-controls", "--render-agreement", "--json"})
     EXPECT_NE(check.out.find(option), std::string::npos) << option << " missing from check --help";
 }
 
