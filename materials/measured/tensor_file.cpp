@@ -40,11 +40,14 @@ template <typename T> using Word = typename WordOf<sizeof(T)>::type;
 template <typename T> T loadLittleEndian(const std::byte* p) {
   Word<T> word = 0;
   for (size_t i = 0; i < sizeof(T); ++i) word = Word<T>(word | (Word<T>(uint8_t(p[i])) << (8 * i)));
-  return std::bit_cast<T>(word);
+  T value;  // memcpy, not std::bit_cast: Emscripten 3.1's libc++ (the explorer's build) lacks it
+  std::memcpy(&value, &word, sizeof(T));
+  return value;
 }
 
 template <typename T> void storeLittleEndian(std::byte* p, T value) {
-  const auto word = std::bit_cast<Word<T>>(value);
+  Word<T> word;
+  std::memcpy(&word, &value, sizeof(T));
   for (size_t i = 0; i < sizeof(T); ++i) p[i] = std::byte((word >> (8 * i)) & 0xff);
 }
 
