@@ -74,7 +74,12 @@ int runExploreCommand(const ExploreCommandOptions& options) {
   std::vector<ExplorerMaterial> materials;
   for (const std::string& argument : options.materials) materials.push_back(loadExplorerMaterial(argument));
   assignIds(materials);
-  StagedDirectory staged(options.out, ExplorerMarkerFile, ExplorerGenerator, "--out");
+  // The page replaces DIR only when DIR is provably an earlier page (its manifest), and never
+  // the directory of a material file it reads.
+  std::vector<InputPath> inputs;
+  for (const std::string& argument : options.materials)
+    if (!isInlineMaterial(argument)) inputs.push_back({"material file", argument});
+  StagedDirectory staged(options.out, ExplorerGenerator, "--out", inputs);
   const ExplorerWritten written = writeExplorer(staged.path(), materials);
   staged.commit();
   const fs::path index = staged.target() / "index.html";
