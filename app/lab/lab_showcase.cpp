@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "app/data_directory.h"
 #include "app/measured_bundle.h"
 #include "app/synth_command.h"
 #include "app/table_cache.h"
@@ -114,7 +115,7 @@ std::vector<LabMaterial> showcaseLabMaterials(const fs::path& scratch, PhaseTime
   });
 
   // Two real measurements of the RGL database (data/rgl, CC0).
-  const fs::path rgl = fs::path(SCATTERLAB_DATA_DIR) / "rgl";
+  const fs::path rgl = runtimeDataDirectory("the lab's RGL showcase materials") / "rgl";
   materials.push_back(rglLabMaterial("rgl-ibiza-sunset-vinyl", rgl / "cc_ibiza_sunset_rgb.bsdf"));
   materials.back().about =
       "Real measurement (RGL database, Dupuy & Jakob 2018): TeckWrap vinyl wrapping film \"Ibiza Sunset\", a "
