@@ -231,3 +231,49 @@ TEST_F(EvalCliBadInput, Materials) {
 
 }  // namespace
 }  // namespace scatterlab
+
+namespace scatterlab {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+using namespace cli_runner;
+
+// `scatterlab eval` on the two real RGL files reproduces the reference reader's own values
+// (rgl-epfl/brdf-loader in float32, data/rgl/NAME.ref.json) at all 256 pairs: f cos(theta_o),
+// the reader's convention, and the pdf. The tolerance is tests/materials/measured/
+// rgl_reference_test.cpp's: 2e-3 relative, with a float32 floor of 1e-6 of the pair's largest
+// channel where a value is clipped to 0 or outside the lobe's support.
+TEST(EvalCli, RglFilesReproduceTheReferenceReadersValues) {
+  constexpr double RelativeTolerance = 2e-3, Float32Floor = 1e-6;
+  const fs::path rgl = fs::path(SCATTERLAB_DATA_DIR) / "rgl";
+  for (const std::string name : {"acrylic_felt_green_rgb", "cc_ibiza_sunset_rgb"}) {
+    std::ifstream in(rgl / (name + ".ref.json"));
+    const json reference = json::parse(in).at("eval");
+    json pairs = json::array();
+    for (const json& pair : reference) pairs.push_back({{"wi", pair.at("wi")}, {"wo", pair.at("wo")}});
+    const fs::path directions = uniquePath("rgl-pairs");
+    std::ofstream(directions) << pairs.dump();
+    const json out = evalJson({(rgl / (name + ".bsdf")).string(), "--directions", directions.string()});
+    ASSERT_EQ(out.at("values").size(), reference.size()) << name;
+    for (size_t i = 0; i < reference.size(); ++i) {
+      const json& expected = reference[i];
+      const json& value = out.at("values")[i];
+      const double cosThetaO = expected.at("wo")[2].get<double>();
+      double scale = 0;
+      for (int c = 0; c < 3; ++c) scale = std::max(scale, expected.at("f")[c].get<double>());
+      for (int c = 0; c < 3; ++c) {
+        const double got = value.at("f")[c].get<double>() * cosThetaO,
+                     want = expected.at("f")[c].get<double>();
+        EXPECT_LE(std::abs(got - want),
+                  RelativeTolerance * std::max(std::abs(got), std::abs(want)) + Float32Floor * scale)
+            << name << " pair " << i << " channel " << c;
+      }
+      const double pdf = value.at("pdf").get<double>(), wantPdf = expected.at("pdf").get<double>();
+      EXPECT_LE(std::abs(pdf - wantPdf), RelativeTolerance * std::max(pdf, wantPdf)) << name << " pair " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace scatterlab
