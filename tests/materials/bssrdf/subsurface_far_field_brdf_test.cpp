@@ -25,13 +25,13 @@ const json Materials[] = {
 constexpr int MaterialCount = 2;
 // A cosine sampler needs neither the suite's grazing angles nor its 1e6 samples to be seen right.
 const std::vector<double> KitAngles{0, 60, 85};
-[[maybe_unused]] const int RegisteredTests =
-    catalog_suite::registerChiSquareTests(MaterialCount * int(KitAngles.size()));
+// The file's Sidak family: one chi-square test per material and angle (catalog_suite.h).
+const catalog_suite::ChiSquareSuite Suite("far-field", MaterialCount* int(KitAngles.size()));
 
 std::unique_ptr<BsdfModel> farField(const json& material) { return makeFarFieldBsdf(material); }
 
 TEST(SubsurfaceFarFieldBrdf, PassesTheKit) {
-  BsdfCheckOptions o = catalog_suite::options("far-field");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = KitAngles;
   o.samples = 200'000;
   for (const json& material : Materials) catalog_suite::expectPasses(*farField(material), material.dump(), o);
@@ -41,7 +41,7 @@ TEST(SubsurfaceFarFieldBrdf, PassesTheKit) {
 // (a cosine sampler has no roughness and a pdf without wi).
 TEST(SubsurfaceFarFieldBrdf, NegativeControlsAreRejected) {
   const auto model = farField(Materials[0]);
-  BsdfCheckOptions o = catalog_suite::options("far-field-controls");
+  BsdfCheckOptions o = Suite.options();
   o.wiThetaDeg = {30};
   o.imageDir.reset();
   const CheckReport report = runNegativeControls(*model, nullptr, "far field", o);
