@@ -122,7 +122,7 @@ TEST(FitCli, CopperTableRecoversAlphaAndIndexWithoutNamingTheMetal) {
                                            "--samples", "30000", "--out", out.string(), "--json"});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(run.out);
-  EXPECT_NEAR(parameter(report, "conductor.alpha"), 0.17, 0.01 * 0.17);
+  EXPECT_NEAR(fittedParameter(report, "conductor.alpha"), 0.17, 0.01 * 0.17);
   const MetalIor& copper = *findMetal("Cu");
   const json written = json::parse(readFile(out));
   const char* channel[] = {"r", "g", "b"};
@@ -131,7 +131,7 @@ TEST(FitCli, CopperTableRecoversAlphaAndIndexWithoutNamingTheMetal) {
       return (sqr(eta - 1) + k * k) / (sqr(eta + 1) + k * k);
     };
     const double truth = reflectance(copper.eta[c], copper.k[c]);
-    EXPECT_NEAR(parameter(report, std::string("conductor.f0.") + channel[c]), truth, 0.01 * truth) << c;
+    EXPECT_NEAR(fittedParameter(report, std::string("conductor.f0.") + channel[c]), truth, 0.01 * truth) << c;
     // The written material holds eta and k with that reflectance, no "metal".
     EXPECT_NEAR(reflectance(written.at("eta")[c].get<double>(), written.at("k")[c].get<double>()), truth,
                 0.01 * truth)

@@ -53,7 +53,8 @@ TEST(PluginCli, ModelsListsThePluginsModelWithItsSpecAndLibrary) {
 
 TEST(PluginCli, PluginPathVariableLoadsPluginsAtStart) {
   const ProcessResult run =
-      runScatterlab({"models", "--json"}, {"SCATTERLAB_PLUGIN_PATH=" + ExamplePhong + ":" + TestModels});
+      runScatterlab({"models", "--json"},
+                    std::vector<std::string>{"SCATTERLAB_PLUGIN_PATH=" + ExamplePhong + ":" + TestModels});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   std::vector<std::string> types;
   for (const json& model : json::parse(run.out)) types.push_back(model.at("type"));
@@ -61,7 +62,8 @@ TEST(PluginCli, PluginPathVariableLoadsPluginsAtStart) {
     EXPECT_NE(std::find(types.begin(), types.end(), type), types.end()) << type;
   // The same library again on the command line is not a duplicate: it is loaded once.
   const ProcessResult again =
-      runScatterlab({"models", "--plugin", ExamplePhong}, {"SCATTERLAB_PLUGIN_PATH=" + ExamplePhong});
+      runScatterlab({"models", "--plugin", ExamplePhong},
+                    std::vector<std::string>{"SCATTERLAB_PLUGIN_PATH=" + ExamplePhong});
   EXPECT_EQ(again.exitCode, 0) << describe(again);
 }
 
@@ -69,7 +71,8 @@ TEST(PluginCli, PluginPathVariableTakesADirectory) {
   const fs::path directory = uniquePath("plugin-dir");
   fs::create_directories(directory);
   fs::copy_file(ExamplePhong, directory / "libexample_phong.so");
-  const ProcessResult run = runScatterlab({"models"}, {"SCATTERLAB_PLUGIN_PATH=" + directory.string()});
+  const ProcessResult run =
+      runScatterlab({"models"}, std::vector<std::string>{"SCATTERLAB_PLUGIN_PATH=" + directory.string()});
   EXPECT_EQ(run.exitCode, 0) << describe(run);
   expectMentions(run.out, {"example-phong"});
   fs::remove_all(directory);
@@ -261,7 +264,8 @@ TEST(PluginCli, APluginWhoseRegistrationThrowsIsBadInput) {
 }
 
 TEST(PluginCli, ABadLibraryInThePluginPathVariableIsBadInput) {
-  const ProcessResult run = runScatterlab({"models"}, {"SCATTERLAB_PLUGIN_PATH=/nonexistent/libnothing.so"});
+  const ProcessResult run = runScatterlab(
+      {"models"}, std::vector<std::string>{"SCATTERLAB_PLUGIN_PATH=/nonexistent/libnothing.so"});
   EXPECT_EQ(run.exitCode, 2) << describe(run);
   expectMentions(run.err, {"SCATTERLAB_PLUGIN_PATH \"/nonexistent/libnothing.so\"", "no such file"});
 }
