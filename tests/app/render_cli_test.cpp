@@ -134,7 +134,7 @@ TEST(RenderCli, DroppedSamplesAreCountedShownAndFailTheRender) {
     SCOPED_TRACE(fault);
     const fs::path prefix = uniquePath("fault-" + fault);
     const ProcessResult run = runScatterlab(render + std::vector<std::string>{"--out", prefix.string()},
-                                            {"SCATTERLAB_TEST_FAULT=" + fault});
+                                            std::vector<std::string>{"SCATTERLAB_TEST_FAULT=" + fault});
     ASSERT_EQ(run.exitCode, 1) << describe(run);
     const json out = json::parse(run.out);
     const json& r = out["renders"][0];
@@ -154,7 +154,7 @@ TEST(RenderCli, DroppedSamplesAreCountedShownAndFailTheRender) {
     // The text output says it too.
     const ProcessResult text = runScatterlab(std::vector<std::string>(render.begin(), render.end() - 1) +
                                                  std::vector<std::string>{"--out", prefix.string()},
-                                             {"SCATTERLAB_TEST_FAULT=" + fault});
+                                             std::vector<std::string>{"SCATTERLAB_TEST_FAULT=" + fault});
     EXPECT_EQ(text.exitCode, 1) << describe(text);
     expectMentions(text.out, {"FAILED: " + std::to_string(dropped) + " samples dropped"});
   }
