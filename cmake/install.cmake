@@ -8,7 +8,8 @@
 #   P/lib/cmake/scatterlab/                    scatterlabConfig.cmake, its version file and the
 #                                              exported targets scatterlab::materials, ::validation,
 #                                              ::fitting, ::integrator and ::scatterlab (the executable)
-#   P/share/scatterlab/                        run-time data (environment maps) and example materials
+#   P/share/scatterlab/                        run-time data (environment maps, the RGL measurements the
+#                                              lab shows), example materials and sweeps
 #   P/share/doc/scatterlab/examples/own-bsdf   the out-of-tree example
 # and a Debian package through CPack (`cpack -G DEB` in the build directory).
 include(GNUInstallDirs)
@@ -41,7 +42,8 @@ install(FILES ${PROJECT_BINARY_DIR}/scatterlabConfig.cmake ${PROJECT_BINARY_DIR}
               ${PROJECT_SOURCE_DIR}/cmake/scatterlabPlugin.cmake
         DESTINATION ${SCATTERLAB_INSTALL_CMAKEDIR})
 
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/envmaps ${PROJECT_SOURCE_DIR}/data/materials
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/envmaps ${PROJECT_SOURCE_DIR}/data/materials ${PROJECT_SOURCE_DIR}/data/rgl
+                  ${PROJECT_SOURCE_DIR}/data/sweeps
         DESTINATION ${CMAKE_INSTALL_DATADIR}/scatterlab)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/own-bsdf DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
 
