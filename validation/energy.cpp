@@ -1,5 +1,7 @@
 #include "validation/energy.h"
 
+#include <algorithm>
+
 namespace scatterlab {
 
 double normalisationTolerance(double failureProbability, size_t samples, double quadratureError) {
@@ -25,8 +27,12 @@ EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals,
   }
   r.failureProbability = double(histogram.failedSamples) / double(std::max<size_t>(histogram.sampleCount, 1));
   r.normalisationError = std::abs(r.pdfIntegral + r.deltaProbability - (1.0 - r.failureProbability));
-  r.normalisationTolerance =
-      normalisationTolerance(r.failureProbability, histogram.sampleCount, r.pdfIntegralError);
+  // The binomial noise of the counted failures, at the larger of the counted fraction and the
+  // one the pdf predicts (1 - its integral): with a failure probability of 1e-5 and 2e4 samples
+  // the count is usually 0, and a standard error taken from that 0 would be 0.
+  const double predictedFailure = std::clamp(1.0 - r.pdfIntegral - r.deltaProbability, 0.0, 1.0);
+  r.normalisationTolerance = normalisationTolerance(std::max(r.failureProbability, predictedFailure),
+                                                    histogram.sampleCount, r.pdfIntegralError);
   return r;
 }
 

@@ -38,8 +38,8 @@ inline constexpr double NormalisationTarget = 1e-5;
 inline constexpr double NormalisationQuadratureLimit = 1e-3;
 
 // Tolerance of the normalisation check: NormalisationTarget, or the quadrature's error estimate
-// where that is larger, plus 4 standard errors of the estimated failure probability (binomial
-// noise: P(failure) is counted, not computed).
+// where that is larger, plus 4 standard errors of the failure fraction (binomial noise: P(failure)
+// is counted, not computed), taken at the larger of the counted and the predicted probability.
 double normalisationTolerance(double failureProbability, size_t samples, double quadratureError);
 
 EnergyResult energyFromIntegrals(const std::vector<glm::dvec4>& cellIntegrals,

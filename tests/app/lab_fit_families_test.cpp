@@ -23,11 +23,22 @@ FitResult fitSpec(const std::string& spec) {
   return fitBrdf(model, samples, quickOptions(Metric::Ngan));
 }
 
+// Every family with a fixed index is identifiable on this table. The conductor whose index is
+// fitted (f0 and edge tint per channel) needs data near grazing to fix its edge tint, which
+// one cell per stratum of this table need not hold: there it may be rank deficient, and then
+// its verdict must be POOR (its identifiability on conductor data is FitCli's copper test).
 TEST(LabFitFamilies, AreIdentifiable) {
   for (const auto& [name, spec] : LabSettings::quickMode(1).fitFamilies) {
     const FitResult result = fitSpec(spec);
-    EXPECT_FALSE(result.rankDeficient) << name << " (" << spec << "): " << result.unidentified.size()
-                                       << " directions the data cannot determine";
+    if (spec != "conductor") {
+      EXPECT_FALSE(result.rankDeficient) << name << " (" << spec << "): " << result.unidentified.size()
+                                         << " directions the data cannot determine";
+      continue;
+    }
+    if (!result.rankDeficient) continue;
+    const FitModel model(parseModelSpec(spec), false);
+    EXPECT_FALSE(judgeFit(result, writeMaterial(model.fittedParts(result.x.data())), 10.0).good)
+        << name << " is rank deficient here and must not be GOOD";
   }
 }
 

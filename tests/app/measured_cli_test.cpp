@@ -46,7 +46,7 @@ TEST(MeasuredCli, RglFilePassesTheKitAndItsControlsAreRejected) {
     EXPECT_TRUE(row.at("passed").get<bool>()) << row.dump();
     const std::string test = row.at("test"), note = row.value("note", "");
     chiSquare += test == "chi2";
-    if (test.rfind("control ", 0) != 0) continue;
+    if (test.rfind("control:", 0) != 0) continue;
     if (note.rfind("rejected", 0) == 0) rejected.insert(test);
     if (note.find("not applicable") != std::string::npos) notApplicable.insert(test);
   }
