@@ -85,7 +85,11 @@ WalkProgress ProgressLine::walkCallback(std::string prefix) {
 void ProgressLine::draw(const std::string& text, double fraction) {
   const std::lock_guard lock(mutex_);
   const auto now = std::chrono::steady_clock::now();
-  if (text != lastText_) stageStart_ = now;
+  // A stage is the text before its bar: the bar changes with every call, the stage does not.
+  if (const std::string stage = text.substr(0, text.find(" [")); stage != stage_) {
+    stage_ = stage;
+    stageStart_ = now;
+  }
   const int percent = static_cast<int>(std::lround(100.0 * std::clamp(fraction, 0.0, 1.0)));
   if (style_ == Style::Lines) {
     // A log line every few seconds: how far, how long so far, about how long still.

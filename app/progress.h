@@ -45,6 +45,7 @@ class ProgressLine {
   std::mutex mutex_;  // the kit may report from worker threads
   bool visible_ = false;
   std::string lastText_;
+  std::string stage_;  // the text without its bar (" [###...]"): a new stage restarts the estimate
   std::chrono::steady_clock::time_point start_{}, lastDraw_{}, stageStart_{};
 };
 
