@@ -27,6 +27,9 @@ const std::string ExamplePhong = SCATTERLAB_PLUGIN_EXAMPLE_PHONG;
 const std::string TestModels = SCATTERLAB_PLUGIN_TEST_PLUGIN_MODELS;
 // A check of well under a second: few samples, a coarse grid, two angles.
 const std::vector<std::string> QuickCheck{"--samples", "20000", "--grid", "16x32", "--wi-theta", "0,60"};
+// With the negative controls: a pdf 5% high on half the sphere moves the chi-square by about
+// N x 0.05^2 / 4, so 2e4 samples (a shift of ~12 on 63 dof) cannot reject it reliably; 4e5 (~250) can.
+const std::vector<std::string> ControlsCheck{"--samples", "400000", "--grid", "16x32", "--wi-theta", "0,60"};
 
 // ---- A plugin's model in every command ---------------------------------------------------
 
@@ -82,7 +85,7 @@ TEST(PluginCli, CheckPassesThePluginsModelWithNegativeControls) {
   const ProcessResult run = runScatterlab(std::vector<std::string>{"check", "--plugin", ExamplePhong,
                                                                    R"({"type": "example-phong"})",
                                                                    "--negative-controls", "--json"} +
-                                          QuickCheck);
+                                          ControlsCheck);
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   const json report = json::parse(run.out);
   EXPECT_TRUE(report.at("passed").get<bool>());
