@@ -102,6 +102,14 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
                   html::escape(missing ? std::to_string(missing) + " missing cells in this slice, in magenta"
                                        : "no missing cells in this slice")),
       {{"class", "slice-figure"}});
+  // What both formats show and record; each adds its own summary and facts below.
+  const std::string sliceHtml = html::element("div", image + chartFigure(chart), {{"class", "chart-grid"}});
+  const json sliceData = {{"phi_d_cell", slice.phiDiffCell},
+                          {"phi_d_deg", slice.phiDiffDeg},
+                          {"slice_image", "slice.png"},
+                          {"slice_data", "slice.json"},
+                          {"slice_log10_range", {scale.log10Min, scale.log10Max}},
+                          {"slices_along_theta_h", slicesJson}};
   if (material.rgl) {
     const RglBrdf& rgl = *material.rgl;
     size_t belowHorizon = 0;
@@ -123,20 +131,15 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
             " more below it). The image and the curves evaluate the file at the MERL cell centres "
             "(materials/measured/rgl_brdf.h); nothing is missing.",
         {{"class", "small"}});
-    section.html = summary + html::element("div", image + chartFigure(chart), {{"class", "chart-grid"}});
-    section.data = {{"phi_d_cell", slice.phiDiffCell},
-                    {"phi_d_deg", slice.phiDiffDeg},
-                    {"slice_image", "slice.png"},
-                    {"slice_data", "slice.json"},
-                    {"slice_log10_range", {scale.log10Min, scale.log10Max}},
-                    {"format", "rgl"},
-                    {"description", rgl.description()},
-                    {"isotropic", rgl.isotropic()},
-                    {"spectral", rgl.spectral()},
-                    {"incident_grid", {rgl.incidentAzimuths(), rgl.incidentElevations()}},
-                    {"tabulated_pairs", pairs},
-                    {"pairs_below_horizon", belowHorizon},
-                    {"slices_along_theta_h", slicesJson}};
+    section.html = summary + sliceHtml;
+    section.data = sliceData;
+    section.data.update(json{{"format", "rgl"},
+                             {"description", rgl.description()},
+                             {"isotropic", rgl.isotropic()},
+                             {"spectral", rgl.spectral()},
+                             {"incident_grid", {rgl.incidentAzimuths(), rgl.incidentElevations()}},
+                             {"tabulated_pairs", pairs},
+                             {"pairs_below_horizon", belowHorizon}});
     return section;
   }
   const TableCoverage coverage = tableCoverage(*material.table);
@@ -150,18 +153,13 @@ ReportSection measuredSection(const LabMaterial& material, const LabSettings& se
           "%; the model fills them from the nearest measured cell along theta_d "
           "(materials/measured/tabulated_brdf.h).",
       {{"class", "small"}});
-  section.html = summary + html::element("div", image + chartFigure(chart), {{"class", "chart-grid"}});
-  section.data = {{"phi_d_cell", slice.phiDiffCell},
-                  {"phi_d_deg", slice.phiDiffDeg},
-                  {"slice_image", "slice.png"},
-                  {"slice_data", "slice.json"},
-                  {"slice_log10_range", {scale.log10Min, scale.log10Max}},
-                  {"format", "merl"},
-                  {"cells", merl::CellCount},
-                  {"reachable_cells", coverage.reachable},
-                  {"missing_reachable_cells", coverage.missingReachable},
-                  {"missing_cells", coverage.missing},
-                  {"slices_along_theta_h", slicesJson}};
+  section.html = summary + sliceHtml;
+  section.data = sliceData;
+  section.data.update(json{{"format", "merl"},
+                           {"cells", merl::CellCount},
+                           {"reachable_cells", coverage.reachable},
+                           {"missing_reachable_cells", coverage.missingReachable},
+                           {"missing_cells", coverage.missing}});
   return section;
 }
 
