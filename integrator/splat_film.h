@@ -147,7 +147,7 @@ template <typename Trace> RenderResult renderWithSplats(const Scene& scene, cons
                                                         const Trace& trace) {
   SplatFilm film(scene.camera(), settings);
   const int chunks = film.chunkCount();
-  std::vector<SplatFilm::Chunk> batch(size_t(SplatFilm::ChunksPerBatch));
+  std::vector<SplatFilm::Chunk> batch(static_cast<size_t>(SplatFilm::ChunksPerBatch));
   std::atomic<int> done{0};
   const auto start = std::chrono::steady_clock::now();
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
