@@ -14,6 +14,7 @@
 #include "materials/bsdf/microfacet.h"
 #include "materials/bsdf/microfacet_type.h"
 #include "materials/bsdf/white_microfacet_albedo.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -132,7 +133,7 @@ template <typename Distribution> class MicrofacetConductorBsdf final : public Bs
   // f cos / pdf, computed as eval() and pdf() compute them.
   std::optional<BsdfSample> sampleCompensated(const Vec3d& wi, double uLobe, const Vec2d& u) const {
     const double albedoI = lobe_->albedo()(wi);
-    const bool single = uLobe < albedoI;
+    const bool single = chooseLobe(uLobe, albedoI).lobe == 0;
     std::optional<Vec3d> wo = single ? reflect(wi, sampleNormal(wi, u)) : lobe_->sample(u);
     if (!wo || !(wo->z > 0)) return std::nullopt;
     const double density = compensatedPdf(wi, *wo, albedoI);
