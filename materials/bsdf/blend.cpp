@@ -1,5 +1,7 @@
 #include "materials/bsdf/blend.h"
 
+#include <algorithm>
+
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -42,6 +44,10 @@ BlendBsdf::BlendBsdf(std::unique_ptr<BsdfModel> first, std::unique_ptr<BsdfModel
 
 bool BlendBsdf::isLossless() const {
   return first_->isLossless() && second_->isLossless() && isTransmissive(*first_) == isTransmissive(*second_);
+}
+
+double BlendBsdf::losslessAccuracy() const {
+  return std::max(first_->losslessAccuracy(), second_->losslessAccuracy());
 }
 
 Rgb BlendBsdf::eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const {
@@ -131,6 +137,15 @@ MaterialModel blendModel() {
                       .materialCount = 2}},
       .alternatives = {},
       .build = buildBlend,
+      .losslessExamples = {{{"type", "blend"},
+                            {"weight", 0.4},
+                            {"materials",
+                             {{{"type", "lambertian"}, {"albedo", 1.0}},
+                              {{"type", "conductor"},
+                               {"alpha", 0.3},
+                               {"multiscatter", "kulla-conty"},
+                               {"eta", {1, 1, 1}},
+                               {"k", {1e8, 1e8, 1e8}}}}}}},
   };
 }
 

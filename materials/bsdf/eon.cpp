@@ -119,6 +119,8 @@ MaterialModel eonModel() {
       .alternatives = {},
       .build = buildEon,
       .lobeWidthParameter = "roughness",
+      .losslessExamples =
+          {{{"type", "eon"}, {"albedo", 1.0}, {"roughness", 0.7}, {"directional_albedo", "analytic"}}},
   };
 }
 
