@@ -6,15 +6,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "materials/core/lobe_choice.h"
 #include "materials/registry/material_model.h"
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
 namespace {
-
-// The largest double below 1: a remapped uLobe stays in [0, 1) despite rounding.
-constexpr double OneMinusEpsilon = 0x1.fffffffffffffp-1;
 
 bool isTransmissive(const BsdfModel& model) { return hasAny(model.flags(), LobeFlags::Transmission); }
 
@@ -69,11 +67,10 @@ double BlendBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) cons
 
 std::optional<BsdfSample> BlendBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                             TransportMode mode) const {
-  const bool chooseFirst = uLobe < firstProbability_;
+  const LobeChoice choice = chooseLobe(uLobe, firstProbability_);
+  const bool chooseFirst = choice.lobe == 0;
   const double probability = chooseFirst ? firstProbability_ : 1.0 - firstProbability_;
-  const double remapped = std::min(
-      chooseFirst ? uLobe / firstProbability_ : (uLobe - firstProbability_) / probability, OneMinusEpsilon);
-  std::optional<BsdfSample> s = (chooseFirst ? first_ : second_)->sample(wi, remapped, u, mode);
+  std::optional<BsdfSample> s = (chooseFirst ? first_ : second_)->sample(wi, choice.u, u, mode);
   if (!s) return s;
   if (s->isDelta()) {
     // Coefficient w c over discrete probability wbar P: the component's weight times w / wbar.

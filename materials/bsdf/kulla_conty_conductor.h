@@ -18,6 +18,7 @@
 #include "materials/bsdf/fresnel_average.h"
 #include "materials/bsdf/kulla_conty.h"
 #include "materials/bsdf/white_microfacet_albedo.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -44,7 +45,7 @@ template <typename Distribution> class KullaContyConductorBsdf final : public Bs
                                    TransportMode = TransportMode::Radiance) const override {
     if (!(wi.z > 0)) return std::nullopt;
     const double albedoI = lobe_->albedo()(wi);  // one table lookup per sample
-    const bool single = uLobe < albedoI;
+    const bool single = chooseLobe(uLobe, albedoI).lobe == 0;
     const std::optional<Vec3d> wo = single ? single_.sampleDirection(wi, u) : lobe_->sample(u);
     if (!wo || !(wo->z > 0)) return std::nullopt;
     const double density = pdfGivenAlbedo(wi, *wo, albedoI);

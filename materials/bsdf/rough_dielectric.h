@@ -36,6 +36,7 @@
 #include "materials/bsdf/refraction.h"
 #include "materials/bsdf/rough_dielectric_multiscatter.h"
 #include "materials/bsdf/smith_transmission.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -181,7 +182,7 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
     if (wi.z == 0 || !std::isfinite(wi.z)) return std::nullopt;
     if (compensation_) return sampleCompensated(wi, uLobe, u, mode);
     const Vec3d m = sampleRoughDielectricNormal(distribution_, wi, u);
-    const bool transmission = !(uLobe < fresnelDielectric(glm::dot(wi, m), eta_));
+    const bool transmission = chooseLobe(uLobe, fresnelDielectric(glm::dot(wi, m), eta_)).lobe != 0;
     return scatterRoughDielectric(distribution_, eta_, wi, m, transmission, mode);
   }
 
@@ -222,14 +223,15 @@ template <typename Distribution> class RoughDielectricBsdf final : public BsdfMo
   std::optional<BsdfSample> sampleCompensated(const Vec3d& wi, double uLobe, const Vec2d& u,
                                               TransportMode mode) const {
     const double albedoI = compensation_->albedoAt(wi);
-    const bool single = uLobe < albedoI;
+    const LobeChoice choice = chooseLobe(uLobe, albedoI);
+    const bool single = choice.lobe == 0;
     std::optional<Vec3d> wo;
     if (single) {
       const Vec3d m = sampleRoughDielectricNormal(distribution_, wi, u);
-      const bool transmission = !(uLobe / albedoI < fresnelDielectric(glm::dot(wi, m), eta_));
+      const bool transmission = chooseLobe(choice.u, fresnelDielectric(glm::dot(wi, m), eta_)).lobe != 0;
       if (const auto s = scatterRoughDielectric(distribution_, eta_, wi, m, transmission, mode)) wo = s->wo;
     } else {
-      wo = compensation_->sample(wi, (uLobe - albedoI) / (1.0 - albedoI), u);
+      wo = compensation_->sample(wi, choice.u, u);
     }
     if (!wo || wo->z == 0) return std::nullopt;
     const double density = compensatedPdf(wi, *wo, albedoI);
