@@ -76,8 +76,8 @@ void loadPlugin(const fs::path& library, const std::string& source) {
   const std::string stamp = stampText ? stampText : "(no stamp)";
   if (!stampText || expected != stamp) {
     dlclose(handle);
-    throw InputError(where + ": was built for " + inQuotes(stamp) +
-                     ", this scatterlab is " + inQuotes(expected) +
+    throw InputError(where + ": was built for " + inQuotes(stamp) + ", this scatterlab is " +
+                     inQuotes(expected) +
                      "; allowed: a plugin rebuilt against this installation of scatterlab");
   }
   loaded.insert(canonical);

@@ -92,8 +92,8 @@ class BsdfModel {
   virtual bool isLossless() const { return false; }
   // For a lossless model, how far from 1 its directional albedo may be by construction: 0 for a
   // model exact by construction (the kit's furnace limit is then the quadrature's own error
-  // estimate), a tabulated compensation's table error otherwise (docs/validation.md, "White
-  // furnace"). Meaningless when isLossless() is false.
+  // estimate), a tabulated compensation's table error otherwise (the white furnace,
+  // docs/validation.md section 3). Meaningless when isLossless() is false.
   virtual double losslessAccuracy() const { return 0.0; }
   // True when f(wi, wo) = f(wo, wi) (BRDF) or the generalised relation holds (BTDF).
   virtual bool isReciprocal() const { return true; }
