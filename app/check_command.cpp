@@ -59,12 +59,14 @@ struct MaterialUnderTest {
   std::unique_ptr<BsdfModel> roughnessMismatchSampler;
 };
 
+// The material is validated here, once; what is built from it takes the typed value.
 MaterialUnderTest prepareMaterial(std::string label, const json& material, bool negativeControls) {
-  if (isSubsurfaceMaterial(material))
-    return {std::move(label), completeMaterial(material), nullptr, makeSubsurface(material), nullptr};
-  MaterialUnderTest prepared{std::move(label), completeMaterial(material), makeBsdf(material), std::nullopt,
+  const ValidatedMaterial validated = validateMaterial(material);
+  if (validated.isSubsurface())
+    return {std::move(label), validated.completed, nullptr, makeSubsurface(validated), nullptr};
+  MaterialUnderTest prepared{std::move(label), validated.completed, makeBsdf(validated), std::nullopt,
                              nullptr};
-  if (negativeControls) prepared.roughnessMismatchSampler = makeRoughnessMismatchSampler(material);
+  if (negativeControls) prepared.roughnessMismatchSampler = makeRoughnessMismatchSampler(validated);
   return prepared;
 }
 
@@ -207,7 +209,7 @@ void printText(const std::vector<MaterialUnderTest>& materials, const CheckRepor
 
 }  // namespace
 
-std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const json& material) {
+std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const ValidatedMaterial& material) {
   const auto mismatched = withMismatchedRoughness(material, RoughnessMismatchFactor);
   return mismatched ? makeBsdf(*mismatched) : nullptr;
 }

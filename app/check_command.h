@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "materials/bsdf/bsdf.h"
+#include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/subsurface_check.h"
 
@@ -42,6 +43,6 @@ SubsurfaceCheckOptions subsurfaceCheckOptions(const BsdfCheckOptions& kit);
 
 // The sampler of the roughness-mismatch negative control (docs/validation.md, "Negative controls": a lobe
 // width 10% off the one pdf() uses), or null for a model without a lobe-width parameter.
-std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const nlohmann::json& material);
+std::unique_ptr<BsdfModel> makeRoughnessMismatchSampler(const ValidatedMaterial& material);
 
 }  // namespace scatterlab

@@ -71,10 +71,12 @@ void loadPlugin(const fs::path& library, const std::string& source) {
                      (abi ? PluginRegisterSymbol : PluginAbiSymbol) + " symbol); allowed: " + PluginAllowed);
   }
   const std::string expected = pluginAbiStamp();
-  const char* stamp = abi();
-  if (!stamp || expected != stamp) {
+  // Copied before anything else: the text lives in the plugin, which dlclose unmaps.
+  const char* stampText = abi();
+  const std::string stamp = stampText ? stampText : "(no stamp)";
+  if (!stampText || expected != stamp) {
     dlclose(handle);
-    throw InputError(where + ": was built for " + inQuotes(stamp ? stamp : "(no stamp)") +
+    throw InputError(where + ": was built for " + inQuotes(stamp) +
                      ", this scatterlab is " + inQuotes(expected) +
                      "; allowed: a plugin rebuilt against this installation of scatterlab");
   }

@@ -14,6 +14,7 @@
 #include "materials/bsdf/cook_torrance.h"
 #include "materials/bsdf/disney.h"
 #include "materials/bsdf/eon.h"
+#include "materials/bsdf/kulla_conty_conductor.h"
 #include "materials/bsdf/lafortune.h"
 #include "materials/bsdf/lambertian.h"
 #include "materials/bsdf/metals.h"
@@ -110,14 +111,12 @@ const MicrofacetConductorBsdf<Distribution<double>>& conductor(MicrofacetSamplin
 // Kulla-Conty compensated gold: isotropic (the committed table) and anisotropic (the
 // per-material table), visible-normal sampling.
 template <template <typename> class Distribution>
-const MicrofacetConductorBsdf<Distribution<double>>& compensatedConductor(bool anisotropic) {
+const KullaContyConductorBsdf<Distribution<double>>& compensatedConductor(bool anisotropic) {
   static const MetalIor* gold = findMetal("Au");
-  static const MicrofacetConductorBsdf<Distribution<double>> isotropic(
-      Distribution<double>(0.3, 0.3), gold->eta, gold->k, MicrofacetSampling::Visible,
-      MultipleScattering::KullaConty);
-  static const MicrofacetConductorBsdf<Distribution<double>> aniso(Distribution<double>(0.3, 0.1), gold->eta,
-                                                                   gold->k, MicrofacetSampling::Visible,
-                                                                   MultipleScattering::KullaConty);
+  static const KullaContyConductorBsdf<Distribution<double>> isotropic(Distribution<double>(0.3, 0.3),
+                                                                       gold->eta, gold->k);
+  static const KullaContyConductorBsdf<Distribution<double>> aniso(Distribution<double>(0.3, 0.1), gold->eta,
+                                                                   gold->k);
   return anisotropic ? aniso : isotropic;
 }
 

@@ -11,6 +11,7 @@
 #include "materials/bsdf/rough_dielectric.h"
 #include "materials/bsdf/smooth_dielectric.h"
 #include "materials/bssrdf/henyey_greenstein.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -103,10 +104,9 @@ std::optional<WalkExit> walkThroughMedium(const Scene& scene, int shape, const S
     if (boundary == Infinity) return std::nullopt;  // outside a shape that is not closed
     // The channel of this flight, with probabilities proportional to the walk's weights.
     const Rgb channelProbability = weight / (weight.x + weight.y + weight.z);
-    const double uChannel = random.next();
-    const int channel = uChannel < channelProbability.x                          ? 0
-                        : uChannel < channelProbability.x + channelProbability.y ? 1
-                                                                                 : 2;
+    const std::array<double, 3> probabilities{channelProbability.x, channelProbability.y,
+                                              channelProbability.z};
+    const int channel = chooseLobe(random.next(), probabilities).lobe;  // weight > 0: never -1
     const double flight = sigmaT[channel] > 0 ? -std::log1p(-random.next()) / sigmaT[channel] : Infinity;
     if (flight < boundary) {
       // A collision: sigma_s,k T_k(t) over the mixture density of the three flights.

@@ -151,7 +151,9 @@ CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settin
   }
   outcome.report = runBsdfChecks(*material.bsdf, material.name, kit, progress);
   if (settings.negativeControls) {
-    const std::unique_ptr<BsdfModel> altered = makeRoughnessMismatchSampler(material.description);
+    // Measured materials have no lobe width, so no roughness-mismatch control.
+    const std::unique_ptr<BsdfModel> altered =
+        material.validated ? makeRoughnessMismatchSampler(*material.validated) : nullptr;
     outcome.controls = runNegativeControls(*material.bsdf, altered.get(), material.name, kit, progress);
   }
   return outcome;

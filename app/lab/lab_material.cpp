@@ -20,11 +20,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() &&
-         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 LabMaterial loadMeasured(std::string name, const fs::path& file) {
   try {
     return measuredLabMaterial(std::move(name), file, std::make_shared<const MerlTable>(readMerl(file)));
@@ -94,13 +89,15 @@ LabMaterial rglLabMaterial(std::string name, const fs::path& file) {
 LabMaterial describedLabMaterial(std::string name, const json& material) {
   LabMaterial m;
   m.name = std::move(name);
-  m.description = completeMaterial(material);
-  if (isSubsurfaceMaterial(material)) {
+  // Validated once; the builders and the negative control take the typed value.
+  m.validated = validateMaterial(material);
+  m.description = m.validated->completed;
+  if (m.validated->isSubsurface()) {
     m.kind = LabMaterialKind::Subsurface;
-    m.subsurface = makeSubsurface(material);
+    m.subsurface = makeSubsurface(*m.validated);
   } else {
     m.kind = LabMaterialKind::Analytic;
-    m.bsdf = makeBsdf(material);
+    m.bsdf = makeBsdf(*m.validated);
   }
   m.about = jsonText(m.description, -1);
   return m;

@@ -16,6 +16,7 @@
 #include "materials/bssrdf/subsurface_material.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/rgl_brdf.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
@@ -28,6 +29,7 @@ struct LabMaterial {
   std::string about;   // one sentence: what it is and where it came from
   LabMaterialKind kind = LabMaterialKind::Analytic;
   nlohmann::json description;                    // completed: every default filled in
+  std::optional<ValidatedMaterial> validated;    // Analytic and Subsurface: the typed description
   std::unique_ptr<BsdfModel> bsdf;               // Analytic and Measured
   std::shared_ptr<const MerlTable> table;        // Measured MERL table: the table as stored
   const RglBrdf* rgl = nullptr;                  // Measured RGL file: the model (owned by bsdf)

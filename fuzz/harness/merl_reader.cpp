@@ -15,7 +15,8 @@ void merlReader(Input data) {
   // A whole table is 35 MB, far beyond what a fuzzer mutates, so the value checks also run on
   // whatever doubles the input holds, as the first cells of the red channel onwards.
   std::vector<double> values(std::min(data.size() / sizeof(double), 3 * merl::CellCount));
-  std::memcpy(values.data(), data.data(), values.size() * sizeof(double));
+  // memcpy from or to a null pointer is undefined even for 0 bytes (an empty vector's data()).
+  if (!values.empty()) std::memcpy(values.data(), data.data(), values.size() * sizeof(double));
   try {
     checkMerlValues(values, "fuzz.binary");
   } catch (const MerlError&) {}

@@ -16,6 +16,7 @@
 #include "materials/bsdf/bsdf.h"
 #include "materials/bsdf/fresnel.h"
 #include "materials/bsdf/half_vector.h"
+#include "materials/core/lobe_choice.h"
 #include "materials/core/warp.h"
 
 namespace scatterlab {
@@ -87,7 +88,7 @@ class AshikhminShirleyBsdf final : public BsdfModel {
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override {
     if (!(wi.z > 0)) return std::nullopt;
-    const bool specular = !diffuse_ || uLobe < specularProbability_;
+    const bool specular = !diffuse_ || chooseLobe(uLobe, specularProbability_).lobe == 0;
     const Vec3d wo = specular ? reflect(wi, sampleHalfVector(u)) : sampleCosineHemisphere(u);
     if (!(wo.z > 0)) return std::nullopt;
     const double density = pdf(wi, wo);

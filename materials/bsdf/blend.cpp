@@ -1,18 +1,18 @@
 #include "materials/bsdf/blend.h"
 
+#include <algorithm>
+
 #include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "materials/core/lobe_choice.h"
 #include "materials/registry/material_model.h"
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
 namespace {
-
-// The largest double below 1: a remapped uLobe stays in [0, 1) despite rounding.
-constexpr double OneMinusEpsilon = 0x1.fffffffffffffp-1;
 
 bool isTransmissive(const BsdfModel& model) { return hasAny(model.flags(), LobeFlags::Transmission); }
 
@@ -46,6 +46,10 @@ bool BlendBsdf::isLossless() const {
   return first_->isLossless() && second_->isLossless() && isTransmissive(*first_) == isTransmissive(*second_);
 }
 
+double BlendBsdf::losslessAccuracy() const {
+  return std::max(first_->losslessAccuracy(), second_->losslessAccuracy());
+}
+
 Rgb BlendBsdf::eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const {
   Rgb f(0.0);
   // A component of weight 0 in every channel is not evaluated: its value could not show.
@@ -63,11 +67,10 @@ double BlendBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) cons
 
 std::optional<BsdfSample> BlendBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                             TransportMode mode) const {
-  const bool chooseFirst = uLobe < firstProbability_;
+  const LobeChoice choice = chooseLobe(uLobe, firstProbability_);
+  const bool chooseFirst = choice.lobe == 0;
   const double probability = chooseFirst ? firstProbability_ : 1.0 - firstProbability_;
-  const double remapped = std::min(
-      chooseFirst ? uLobe / firstProbability_ : (uLobe - firstProbability_) / probability, OneMinusEpsilon);
-  std::optional<BsdfSample> s = (chooseFirst ? first_ : second_)->sample(wi, remapped, u, mode);
+  std::optional<BsdfSample> s = (chooseFirst ? first_ : second_)->sample(wi, choice.u, u, mode);
   if (!s) return s;
   if (s->isDelta()) {
     // Coefficient w c over discrete probability wbar P: the component's weight times w / wbar.
@@ -134,6 +137,15 @@ MaterialModel blendModel() {
                       .materialCount = 2}},
       .alternatives = {},
       .build = buildBlend,
+      .losslessExamples = {{{"type", "blend"},
+                            {"weight", 0.4},
+                            {"materials",
+                             {{{"type", "lambertian"}, {"albedo", 1.0}},
+                              {{"type", "conductor"},
+                               {"alpha", 0.3},
+                               {"multiscatter", "kulla-conty"},
+                               {"eta", {1, 1, 1}},
+                               {"k", {1e8, 1e8, 1e8}}}}}}},
   };
 }
 

@@ -44,6 +44,8 @@ class BlendBsdf final : public BsdfModel {
 
   LobeFlags flags() const override { return first_->flags() | second_->flags(); }
   bool isLossless() const override;
+  // A convex combination is no further from 1 than its worse component.
+  double losslessAccuracy() const override;
   bool isReciprocal() const override { return first_->isReciprocal() && second_->isReciprocal(); }
   double interiorIndex() const override { return interiorIndex_; }
 

@@ -90,6 +90,11 @@ class BsdfModel {
   // True when the model loses no energy by construction for its current parameters (white
   // furnace: directional albedo 1 at every wi); the kit then checks albedo == 1.
   virtual bool isLossless() const { return false; }
+  // For a lossless model, how far from 1 its directional albedo may be by construction: 0 for a
+  // model exact by construction (the kit's furnace limit is then the quadrature's own error
+  // estimate), a tabulated compensation's table error otherwise (docs/validation.md, "White
+  // furnace"). Meaningless when isLossless() is false.
+  virtual double losslessAccuracy() const { return 0.0; }
   // True when f(wi, wo) = f(wo, wi) (BRDF) or the generalised relation holds (BTDF).
   virtual bool isReciprocal() const { return true; }
   // Index of refraction below the surface (z < 0) relative to above; 1 for models without

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "materials/bsdf/conductor_index_spec.h"
+#include "materials/bsdf/kulla_conty_conductor.h"
 #include "materials/bsdf/microfacet_spec.h"
 #include "materials/registry/material_model.h"
 
@@ -20,13 +21,15 @@ std::unique_ptr<BsdfModel> makeMicrofacetConductor(MicrofacetType type, double a
       throw std::invalid_argument("microfacet roughness must be positive and finite, got " +
                                   std::to_string(alpha));
   }
+  const auto make =
+      [&]<typename Distribution>(const Distribution& distribution) -> std::unique_ptr<BsdfModel> {
+    if (multipleScattering == MultipleScattering::KullaConty)
+      return std::make_unique<KullaContyConductorBsdf<Distribution>>(distribution, eta, k, sampling);
+    return std::make_unique<MicrofacetConductorBsdf<Distribution>>(distribution, eta, k, sampling);
+  };
   switch (type) {
-    case MicrofacetType::Ggx:
-      return std::make_unique<MicrofacetConductorBsdf<GgxDistribution<double>>>(
-          GgxDistribution<double>(alphaX, alphaY), eta, k, sampling, multipleScattering);
-    case MicrofacetType::Beckmann:
-      return std::make_unique<MicrofacetConductorBsdf<BeckmannDistribution<double>>>(
-          BeckmannDistribution<double>(alphaX, alphaY), eta, k, sampling, multipleScattering);
+    case MicrofacetType::Ggx: return make(GgxDistribution<double>(alphaX, alphaY));
+    case MicrofacetType::Beckmann: return make(BeckmannDistribution<double>(alphaX, alphaY));
   }
   throw std::invalid_argument("unknown microfacet distribution");
 }
@@ -70,6 +73,23 @@ MaterialModel conductorModel() {
       .alternatives = conductorIndexAlternatives(),
       .build = buildConductor,
       .lobeWidthParameter = "alpha",
+      .losslessExamples = {{{"type", "conductor"},
+                            {"distribution", "ggx"},
+                            {"alpha", 0.3},
+                            {"multiscatter", "kulla-conty"},
+                            {"eta", {1, 1, 1}},
+                            {"k", {1e8, 1e8, 1e8}}},
+                           {{"type", "conductor"},
+                            {"distribution", "beckmann"},
+                            {"alpha", 0.3},
+                            {"multiscatter", "kulla-conty"},
+                            {"eta", {1, 1, 1}},
+                            {"k", {1e8, 1e8, 1e8}}},
+                           {{"type", "conductor"},
+                            {"alpha", {0.3, 0.1}},
+                            {"multiscatter", "kulla-conty"},
+                            {"eta", {1, 1, 1}},
+                            {"k", {1e8, 1e8, 1e8}}}},
   };
 }
 

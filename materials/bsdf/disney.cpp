@@ -1,10 +1,12 @@
 #include "materials/bsdf/disney.h"
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "materials/core/lobe_choice.h"
 #include "materials/registry/material_model.h"
 
 namespace scatterlab {
@@ -78,15 +80,17 @@ std::optional<BsdfSample> DisneyBsdf::sample(const Vec3d& wi, double uLobe, cons
                                              TransportMode) const {
   if (!(wi.z > 0)) return std::nullopt;
   const LobeProbabilities p = lobeProbabilities(wi);
+  // Absent lobes have probability 0 (lobeProbabilities) and are never chosen.
+  const std::array<double, 3> probabilities{p.diffuse, p.specular, p.clearcoat};
   Vec3d wo;
   LobeFlags lobe = LobeFlags::GlossyReflection;
-  if (hasDiffuse_ && uLobe < p.diffuse) {
-    wo = sampleCosineHemisphere(u);
-    lobe = LobeFlags::DiffuseReflection;
-  } else if (hasClearcoat_ && uLobe >= p.diffuse + p.specular) {
-    wo = reflect(wi, terms_.clearcoat.sampleClassic(u));
-  } else {
-    wo = reflect(wi, terms_.specular.sampleVisible(wi, u));
+  switch (chooseLobe(uLobe, probabilities).lobe) {
+    case 0:
+      wo = sampleCosineHemisphere(u);
+      lobe = LobeFlags::DiffuseReflection;
+      break;
+    case 2: wo = reflect(wi, terms_.clearcoat.sampleClassic(u)); break;
+    default: wo = reflect(wi, terms_.specular.sampleVisible(wi, u));
   }
   if (!(wo.z > 0)) return std::nullopt;
   // The mixture density and the weight from (wi, wo) alone, as pdf() and eval() compute them.

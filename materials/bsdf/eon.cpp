@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "materials/core/lobe_choice.h"
 #include "materials/registry/material_model.h"
 
 namespace scatterlab {
@@ -68,8 +69,9 @@ std::optional<BsdfSample> EonBsdf::sample(const Vec3d& wi, double uLobe, const V
   if (!(wi.z > 0)) return std::nullopt;
   const double pUniform = uniformProbability(wi.z, r_);
   const EonCltc cltc(wi, r_);
-  const std::optional<Vec3d> wo =
-      uLobe < pUniform ? std::optional<Vec3d>(sampleUniformHemisphere(u)) : cltc.sample(u);
+  const std::optional<Vec3d> wo = chooseLobe(uLobe, pUniform).lobe == 0
+                                      ? std::optional<Vec3d>(sampleUniformHemisphere(u))
+                                      : cltc.sample(u);
   if (!wo || !(wo->z > 0)) return std::nullopt;
   // The mixture's density, computed as pdf() computes it.
   const double density = pUniform * uniformHemispherePdf() + (1.0 - pUniform) * cltc.pdf(*wo);
@@ -117,6 +119,8 @@ MaterialModel eonModel() {
       .alternatives = {},
       .build = buildEon,
       .lobeWidthParameter = "roughness",
+      .losslessExamples =
+          {{{"type", "eon"}, {"albedo", 1.0}, {"roughness", 0.7}, {"directional_albedo", "analytic"}}},
   };
 }
 

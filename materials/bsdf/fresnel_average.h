@@ -4,6 +4,8 @@
 // term with it (kulla_conty.h). Computed by quadrature, per channel.
 #pragma once
 
+#include <algorithm>
+
 #include "materials/bsdf/fresnel.h"
 #include "materials/core/quadrature.h"
 
@@ -22,6 +24,15 @@ template <typename F> auto cosineWeightedAverage(const F& f) {
 // F_avg of the conductor Fresnel term per linear-RGB channel.
 inline Rgb conductorFresnelAverage(const Rgb& eta, const Rgb& k) {
   return cosineWeightedAverage([&](double mu) { return fresnelConductor(mu, eta, k); });
+}
+
+// A perfect conductor (k -> infinity) reflects everything: F = 1 to round-off. Taken as F_avg
+// within PerfectConductorTolerance of 1 in every channel (F <= 1, so no angle reflects much
+// less); such a conductor is lossless within that tolerance.
+inline constexpr double PerfectConductorTolerance = 1e-9;
+inline bool isPerfectConductor(const Rgb& eta, const Rgb& k) {
+  const Rgb average = conductorFresnelAverage(eta, k);
+  return std::min({average.x, average.y, average.z}) >= 1.0 - PerfectConductorTolerance;
 }
 
 }  // namespace scatterlab

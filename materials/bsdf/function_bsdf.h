@@ -44,6 +44,7 @@ struct FunctionBsdfOptions {
   bool evalIncludesCosine = false;  // eval returns f |cos wo|; the adapter divides by |cos wo|
   bool reciprocal = true;           // false: the reciprocity rows are listed, not tested
   bool lossless = false;            // true: the kit checks the white furnace (albedo = 1)
+  double losslessAccuracy = 0.0;    // how far from 1 the albedo may be by construction (bsdf.h)
 };
 
 template <typename Eval, typename Pdf, typename Sample> class FunctionBsdf final : public BsdfModel {
@@ -87,6 +88,7 @@ template <typename Eval, typename Pdf, typename Sample> class FunctionBsdf final
 
   LobeFlags flags() const override { return options_.flags; }
   bool isLossless() const override { return options_.lossless; }
+  double losslessAccuracy() const override { return options_.losslessAccuracy; }
   bool isReciprocal() const override { return options_.reciprocal; }
 
  private:

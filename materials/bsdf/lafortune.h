@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "materials/bsdf/cosine_lobe.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -87,16 +88,15 @@ class LafortuneBsdf final : public BsdfModel {
     if (!(wi.z > 0)) return std::nullopt;
     const Weights w = weights(wi);
     if (!(w.total > 0)) return std::nullopt;
-    double target = uLobe * w.total - w.diffuse;
-    if (target < 0) return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);
-    size_t chosen = lobes_.size();
-    for (size_t i = 0; i < lobes_.size(); ++i) {
-      if (w.lobe[i] > 0) chosen = i;  // the last lobe with weight takes round-off
-      if (w.lobe[i] > 0 && target < w.lobe[i]) break;
-      target -= w.lobe[i];
-    }
-    if (chosen == lobes_.size()) return std::nullopt;
-    const Vec3d wo = sampleCosinePowerAbout(axis(chosen, wi), u, lobes_[chosen].n);
+    // Probability 0: the diffuse part, i + 1: lobe i (the weights over their total).
+    std::array<double, MaxLobes + 1> probabilities{};
+    probabilities[0] = w.diffuse / w.total;
+    for (size_t i = 0; i < lobes_.size(); ++i) probabilities[i + 1] = w.lobe[i] / w.total;
+    const int chosen = chooseLobe(uLobe, std::span(probabilities.data(), lobes_.size() + 1)).lobe;
+    if (chosen < 0) return std::nullopt;
+    if (chosen == 0) return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);
+    const size_t lobe = size_t(chosen - 1);
+    const Vec3d wo = sampleCosinePowerAbout(axis(lobe, wi), u, lobes_[lobe].n);
     return finishSample(*this, wi, wo, LobeFlags::GlossyReflection);
   }
   LobeFlags flags() const override { return LobeFlags::DiffuseReflection | LobeFlags::GlossyReflection; }

@@ -28,6 +28,7 @@ MaterialModel lambertianModel() {
                       .description = "reflectance per linear-RGB channel"}},
       .alternatives = {},
       .build = buildLambertian,
+      .losslessExamples = {{{"type", "lambertian"}, {"albedo", 1.0}}},
   };
 }
 

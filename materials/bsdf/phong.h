@@ -8,6 +8,7 @@
 #pragma once
 
 #include "materials/bsdf/cosine_lobe.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -82,7 +83,7 @@ template <typename Lobe> class NormalizedPhongBsdf final : public BsdfModel {
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                    TransportMode = TransportMode::Radiance) const override {
     if (!(wi.z > 0)) return std::nullopt;
-    if (uLobe >= glossyProbability_)
+    if (chooseLobe(uLobe, glossyProbability_).lobe != 0)
       return finishSample(*this, wi, sampleCosineHemisphere(u), LobeFlags::DiffuseReflection);
     const std::optional<Vec3d> wo = Lobe::sample(n_, wi, u);
     if (!wo) return std::nullopt;

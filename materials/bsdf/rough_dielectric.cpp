@@ -77,6 +77,8 @@ MaterialModel roughDielectricModel() {
       .alternatives = {},
       .build = buildRoughDielectric,
       .lobeWidthParameter = "alpha",
+      .losslessExamples =
+          {{{"type", "rough-dielectric"}, {"alpha", 0.3}, {"eta", 1.5}, {"multiscatter", "kulla-conty"}}},
   };
 }
 

@@ -9,6 +9,7 @@
 
 #include "materials/bsdf/refraction.h"
 #include "materials/bsdf/rough_dielectric_albedo.h"
+#include "materials/core/lobe_choice.h"
 #include "materials/core/quadrature.h"
 #include "materials/core/shared_cache.h"
 
@@ -185,7 +186,7 @@ double RoughDielectricCompensation::pdf(const Vec3d& wi, const Vec3d& wo) const 
 std::optional<Vec3d> RoughDielectricCompensation::sample(const Vec3d& wi, double uLobe,
                                                          const Vec2d& u) const {
   if (wi.z == 0) return std::nullopt;
-  const bool inside = wi.z < 0, reflection = uLobe < reflectionShare(inside);
+  const bool inside = wi.z < 0, reflection = chooseLobe(uLobe, reflectionShare(inside)).lobe == 0;
   const bool below = reflection ? inside : !inside;
   std::optional<Vec3d> wo = sampler(below).sample(u);
   if (wo && below) wo->z = -wo->z;

@@ -77,6 +77,7 @@ MaterialModel roughPlasticModel() {
       .alternatives = {},
       .build = buildRoughPlastic,
       .lobeWidthParameter = "alpha",
+      .losslessExamples = {{{"type", "rough-plastic"}, {"alpha", 0.2}, {"diffuse", 1.0}, {"eta", 1.5}}},
   };
 }
 

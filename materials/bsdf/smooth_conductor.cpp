@@ -28,6 +28,7 @@ MaterialModel smoothConductorModel() {
       .parameters = conductorIndexParameters(),
       .alternatives = conductorIndexAlternatives(),
       .build = buildSmoothConductor,
+      .losslessExamples = {{{"type", "smooth-conductor"}, {"eta", {1, 1, 1}}, {"k", {1e8, 1e8, 1e8}}}},
   };
 }
 

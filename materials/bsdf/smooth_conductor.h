@@ -7,12 +7,14 @@
 
 #include "materials/bsdf/bsdf.h"
 #include "materials/bsdf/fresnel.h"
+#include "materials/bsdf/fresnel_average.h"
 
 namespace scatterlab {
 
 class SmoothConductorBsdf final : public BsdfModel {
  public:
-  SmoothConductorBsdf(const Rgb& eta, const Rgb& k) : eta_(eta), k_(k) {}
+  SmoothConductorBsdf(const Rgb& eta, const Rgb& k)
+      : eta_(eta), k_(k), lossless_(isPerfectConductor(eta, k)) {}
 
   Rgb eval(const Vec3d&, const Vec3d&, TransportMode = TransportMode::Radiance) const override {
     return Rgb(0.0);
@@ -28,8 +30,10 @@ class SmoothConductorBsdf final : public BsdfModel {
   }
 
   LobeFlags flags() const override { return LobeFlags::SpecularReflection; }
-  // A metal absorbs what it does not reflect; F = 1 only in the limit k -> infinity.
-  bool isLossless() const override { return false; }
+  // A metal absorbs what it does not reflect; F = 1 only in the limit k -> infinity, a perfect
+  // conductor (fresnel_average.h), which is lossless to that limit's tolerance.
+  bool isLossless() const override { return lossless_; }
+  double losslessAccuracy() const override { return PerfectConductorTolerance; }
 
   // The mirror's reflectance at incidence cos theta_i: the sample weight.
   Rgb reflectance(double cosThetaI) const { return fresnelConductor(cosThetaI, eta_, k_); }
@@ -38,6 +42,7 @@ class SmoothConductorBsdf final : public BsdfModel {
 
  private:
   Rgb eta_, k_;
+  bool lossless_;
 };
 
 struct MaterialModel;

@@ -30,6 +30,7 @@ MaterialModel dielectricModel() {
           DielectricIndexRange, "index of refraction inside (below the surface) relative to outside")},
       .alternatives = {},
       .build = buildDielectric,
+      .losslessExamples = {{{"type", "dielectric"}, {"eta", 1.5}}},
   };
 }
 

@@ -19,6 +19,7 @@
 #include "materials/bsdf/bsdf.h"
 #include "materials/bsdf/fresnel.h"
 #include "materials/bsdf/refraction.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -39,8 +40,8 @@ class SmoothDielectricBsdf final : public BsdfModel {
                                    TransportMode mode = TransportMode::Radiance) const override {
     if (wi.z == 0 || !std::isfinite(wi.z)) return std::nullopt;
     const double r = reflectance(wi.z);
-    // uLobe < 1 always, so r = 1 (total internal reflection) always reflects.
-    if (uLobe < r)
+    // r = 1 (total internal reflection) always reflects: transmission has probability 0.
+    if (chooseLobe(uLobe, r).lobe == 0)
       return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), r, LobeFlags::SpecularReflection, 1.0};
     const std::optional<Refraction> t = refract(wi, Vec3d(0, 0, 1), eta_);
     // Refraction fails only under total internal reflection, where r = 1; a rounding

@@ -28,6 +28,7 @@ MaterialModel thinDielectricModel() {
           DielectricIndexRange, "index of refraction of the sheet relative to the medium around it")},
       .alternatives = {},
       .build = buildThinDielectric,
+      .losslessExamples = {{{"type", "thin-dielectric"}, {"eta", 1.5}}},
   };
 }
 

@@ -14,6 +14,7 @@
 
 #include "materials/bsdf/bsdf.h"
 #include "materials/bsdf/fresnel.h"
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
@@ -33,7 +34,7 @@ class ThinDielectricBsdf final : public BsdfModel {
                                    TransportMode = TransportMode::Radiance) const override {
     if (wi.z == 0 || !std::isfinite(wi.z)) return std::nullopt;
     const double r = reflectance(wi.z);
-    if (uLobe < r)
+    if (chooseLobe(uLobe, r).lobe == 0)
       return BsdfSample{Vec3d(-wi.x, -wi.y, wi.z), Rgb(1.0), r, LobeFlags::SpecularReflection, 1.0};
     return BsdfSample{-wi, Rgb(1.0), 1.0 - r, LobeFlags::SpecularTransmission, 1.0};
   }

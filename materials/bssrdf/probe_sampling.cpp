@@ -3,24 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <utility>
+
+#include "materials/core/lobe_choice.h"
 
 namespace scatterlab {
 
 namespace {
-
-// Index i with probability p[i], and u remapped into [0, 1) inside i's share.
-std::pair<int, double> chooseIndex(const std::array<double, 3>& p, double u) {
-  double lower = 0.0;
-  int last = 0;
-  for (int i = 0; i < 3; ++i) {
-    if (!(p[i] > 0)) continue;
-    last = i;
-    if (u < lower + p[i]) return {i, std::clamp((u - lower) / p[i], 0.0, 0x1.fffffffffffffp-1)};
-    lower += p[i];
-  }
-  return {last, 0x1.fffffffffffffp-1};  // u beyond the sum by round-off
-}
 
 void checkProbabilities(const std::array<double, 3>& p, const char* what) {
   double sum = 0;
@@ -64,8 +52,9 @@ double ProbeSampler::largestRadius() const { return *std::max_element(maxRadius_
 
 ProbeSegment ProbeSampler::sample(const Framed& frame, const Vec3d& origin, double uChoice,
                                   const Vec2d& u) const {
-  const auto [axis, uChannel] = chooseIndex(sampling_.axisProbability, uChoice);
-  const int channel = chooseIndex(sampling_.channelProbability, uChannel).first;
+  // The constructor checked that both sets of probabilities sum to 1: lobe is never -1.
+  const auto [axis, uChannel] = chooseLobe(uChoice, sampling_.axisProbability);
+  const int channel = chooseLobe(uChannel, sampling_.channelProbability).lobe;
   const double r = profile_->sampleRadius(channel, u.x * sampling_.truncation);
   const double phi = 2.0 * Pi * u.y;
   const Vec3d a = axisOf(frame, axis), b1 = axisOf(frame, (axis + 1) % 3), b2 = axisOf(frame, (axis + 2) % 3);

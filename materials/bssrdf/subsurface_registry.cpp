@@ -255,8 +255,9 @@ bool isSubsurfaceMaterial(const json& material) {
   return model && model->kind == MaterialKind::Subsurface;
 }
 
-SubsurfaceMaterial makeSubsurface(const json& material) {
-  const ValidatedMaterial validated = validateMaterial(material);
+SubsurfaceMaterial makeSubsurface(const json& material) { return makeSubsurface(validateMaterial(material)); }
+
+SubsurfaceMaterial makeSubsurface(const ValidatedMaterial& validated) {
   if (validated.model->kind != MaterialKind::Subsurface)
     throwMaterialKeyError("type", validated.model->type, "is a BSDF model, not a subsurface material",
                           "\"subsurface\"");

@@ -11,6 +11,7 @@
 
 #include "materials/bssrdf/subsurface_material.h"
 #include "materials/registry/material_model.h"
+#include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
 
@@ -23,6 +24,7 @@ bool isSubsurfaceMaterial(const nlohmann::json& material);
 // Builds the subsurface material a description gives; throws MaterialError on any invalid
 // description, and for a BSDF description.
 SubsurfaceMaterial makeSubsurface(const nlohmann::json& material);
+SubsurfaceMaterial makeSubsurface(const ValidatedMaterial& material);
 
 // The BSDF of any registry material as seen from afar: a BSDF material's own BSDF (makeBsdf), a
 // subsurface material's BSSRDF integrated over the entry point (subsurface_far_field_brdf.h).

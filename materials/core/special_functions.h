@@ -1,7 +1,13 @@
-// Special functions that model kernels need with T = ceres::Jet, where std:: has no overload
-// (std::lgamma has none for Jets). Written with arithmetic, log and exp only, so the
-// derivative comes from the same expression as the value.
+// Special functions the standard library lacks. ln Gamma and Beta are for model kernels with
+// T = ceres::Jet, where std:: has no overload (std::lgamma has none for Jets): written with
+// arithmetic, log and exp only, so the derivative comes from the same expression as the value.
+// The inverse error functions (double only) invert the Beckmann distribution's slope
+// distribution (materials/bsdf/microfacet.h).
 #pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "materials/core/math.h"
 
@@ -58,6 +64,63 @@ template <typename T> T betaFunction(T a, T b) {
   detail::shiftForStirling(c, productC);
   return exp((detail::stirlingSeries(a) + detail::stirlingSeries(b)) - detail::stirlingSeries(c)) *
          (productC / (productA * productB));
+}
+
+// ---- Inverse error functions (Newton on std::erf / std::erfc) ----
+
+// Winitzki 2008, "A handy approximation for the error function and its inverse": a start
+// for Newton, within 2e-3 relative over (-1, 1) including the tails. 1 - z^2 is passed as
+// oneMinusZ2 so that tails given as erfc values keep their precision.
+inline double erfinvInitialGuess(double z, double oneMinusZ2) {
+  constexpr double a = 0.147;
+  const double logTerm = std::log(oneMinusZ2);
+  const double t = 2.0 / (Pi * a) + 0.5 * logTerm;
+  const double y = std::sqrt(std::max(0.0, std::sqrt(t * t - logTerm / a) - t));
+  return std::copysign(y, z);
+}
+
+inline double inverseErfc(double q);
+
+// erf^-1(z) for z in (-1, 1). |z| <= 1/2: Newton on erf, which is steep there (erf' > 0.88).
+// |z| > 1/2: the tail is solved as erfc^-1(1 - |z|), exact in floating point for those z, so
+// that the answer is not limited by the rounding of z near +-1.
+inline double erfinv(double z) {
+  if (std::abs(z) > 0.5) return std::copysign(inverseErfc(1.0 - std::abs(z)), z);
+  double y = erfinvInitialGuess(z, (1.0 - z) * (1.0 + z));
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const double step = (std::erf(y) - z) / (2.0 / SqrtPi * std::exp(-y * y));
+    y -= step;
+    if (std::abs(step) <= 1e-15 * std::abs(y)) break;
+  }
+  return y;
+}
+
+// erfc^-1(q) for q in (0, 2); q is clamped to [DBL_MIN, 2 - DBL_MIN], so the answer stays
+// finite (|y| <= ~26.5, where erfc underflows). For q < 1/2 the equation log erfc(y) = log q
+// is solved by Newton inside the bracket [erfc^-1(1/2), 27]: log erfc is concave and close to
+// quadratic, so Newton converges in a few steps even for q = 1e-300.
+inline double inverseErfc(double q) {
+  q = std::clamp(q, std::numeric_limits<double>::min(), 2.0 - std::numeric_limits<double>::min());
+  if (q > 1.0) return -inverseErfc(2.0 - q);
+  if (q >= 0.5) return erfinv(1.0 - q);
+  double lo = 0.4769362762044698, hi = 27.0;  // erfc(lo) = 1/2 > q > erfc(27)
+  double y = std::clamp(erfinvInitialGuess(1.0, q * (2.0 - q)), lo, hi);
+  const double logQ = std::log(q);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double e = std::erfc(y);
+    const double excess = std::log(e) - logQ;  // decreasing in y
+    if (excess > 0)
+      lo = y;
+    else
+      hi = y;
+    const double slope = -2.0 / SqrtPi * std::exp(-y * y) / e;
+    const double newton = y - excess / slope;
+    // Tested before the bracket: a converged step may land on the bracket's end.
+    if (std::abs(newton - y) <= 1e-15 * y) return newton;
+    y = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
+    if (hi - lo <= 1e-15 * y) break;
+  }
+  return y;
 }
 
 }  // namespace scatterlab

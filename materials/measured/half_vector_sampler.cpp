@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "materials/bsdf/half_vector.h"
+#include "materials/core/lobe_choice.h"
 #include "materials/core/warp.h"
 #include "materials/measured/merl_format.h"
 
@@ -103,11 +104,12 @@ std::optional<Vec3d> HalfVectorSampler::sample(const Vec3d& wi, double uLobe, co
     const Vec3d wo = sampleCosineHemisphere(u);
     return wo.z > 0 ? std::optional<Vec3d>(wo) : std::nullopt;
   };
-  const double c = options_.cosineFraction;
-  if (uLobe < c) return cosineSample();
-  const double uNode = (uLobe - c) / (1.0 - c);
+  const LobeChoice choice = chooseLobe(uLobe, options_.cosineFraction);
+  if (choice.lobe == 0) return cosineSample();
+  // The table lobe interpolates two nodes: a second choice with the remapped number.
   const NodeWeights w = nodeWeights(wi.z);
-  const PiecewiseBilinear2D& distribution = nodes_[size_t(uNode < 1.0 - w.secondWeight ? w.first : w.second)];
+  const bool firstNode = chooseLobe(choice.u, 1.0 - w.secondWeight).lobe == 0;
+  const PiecewiseBilinear2D& distribution = nodes_[size_t(firstNode ? w.first : w.second)];
   if (!(distribution.total() > 0)) return cosineSample();
 
   const Vec2d grid = distribution.sample(u);

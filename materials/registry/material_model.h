@@ -65,6 +65,10 @@ struct MaterialModel {
   std::string plugin{};
   // Optional, for plugin models: the fitter's kernel (without one it differentiates numerically).
   FitKernelFunction fitKernel{};
+  // Materials of this model that are lossless by construction (BsdfModel::isLossless()), one per
+  // way the model can be: the white-furnace render test renders every one of them
+  // (tests/integrator/furnace_test.cpp). Empty for a model that never is.
+  std::vector<nlohmann::json> losslessExamples{};
 
   const ParameterSpec* findParameter(std::string_view name) const {
     const auto it = std::find_if(parameters.begin(), parameters.end(),

@@ -35,7 +35,7 @@
 namespace scatterlab {
 
 // The version of the plugin interface (PluginRegistrar, MaterialModel, the entry points below).
-inline constexpr int PluginInterfaceVersion = 1;
+inline constexpr int PluginInterfaceVersion = 2;
 
 // What a plugin and the scatterlab loading it must agree on to share C++ objects: this interface,
 // scatterlab's version, the standard library's ABI, the JSON and GLM versions, and the sizes of the

@@ -95,6 +95,11 @@ bool PluginBsdf::isLossless() const {
   return guarded([&] { return model_->isLossless(); }, [] { return std::string("isLossless()"); });
 }
 
+double PluginBsdf::losslessAccuracy() const {
+  return guarded([&] { return model_->losslessAccuracy(); },
+                 [] { return std::string("losslessAccuracy()"); });
+}
+
 bool PluginBsdf::isReciprocal() const {
   return guarded([&] { return model_->isReciprocal(); }, [] { return std::string("isReciprocal()"); });
 }

@@ -28,6 +28,7 @@ class PluginBsdf final : public BsdfModel {
                                    TransportMode mode = TransportMode::Radiance) const override;
   LobeFlags flags() const override;
   bool isLossless() const override;
+  double losslessAccuracy() const override;
   bool isReciprocal() const override;
   double interiorIndex() const override;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <utility>
 
@@ -240,7 +241,14 @@ MaterialError nestedMaterialError(const MaterialError& error, const std::string&
   return MaterialError("material key " + inQuotes(prefix) + ": " + message);
 }
 
+namespace {
+std::atomic<uint64_t> validationCount{0};
+}  // namespace
+
+uint64_t materialValidationCount() { return validationCount.load(); }
+
 ValidatedMaterial validateMaterial(const json& material) {
+  ++validationCount;
   const MaterialModel& model = modelOf(material);
   rejectUnknownKeys(material, model);
   const size_t chosen = chosenAlternative(material, model);
@@ -264,8 +272,7 @@ ValidatedMaterial validateMaterial(const json& material) {
   return parsed;
 }
 
-std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material) {
-  const ValidatedMaterial parsed = validateMaterial(material);
+std::unique_ptr<BsdfModel> makeBsdf(const ValidatedMaterial& parsed) {
   if (parsed.model->kind != MaterialKind::Bsdf || !parsed.model->build)
     throwMaterialKeyError(
         "type", parsed.model->type, "is a subsurface material (a BSSRDF), not a BSDF",
@@ -275,32 +282,48 @@ std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material) {
   return parsed.model->build(parsed.parameters);
 }
 
+std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material) {
+  return makeBsdf(validateMaterial(material));
+}
+
 nlohmann::json completeMaterial(const nlohmann::json& material) {
   return validateMaterial(material).completed;
 }
 
-std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor) {
-  ValidatedMaterial parsed = validateMaterial(material);
-  const MaterialModel& model = *parsed.model;
+std::optional<ValidatedMaterial> withScaledRoughness(const ValidatedMaterial& material, double factor) {
+  const MaterialModel& model = *material.model;
   if (model.lobeWidthParameter.empty()) return std::nullopt;
   const ParameterSpec* width = model.findParameter(model.lobeWidthParameter);
   if (!width || width->kind == ParameterKind::Choice || width->kind == ParameterKind::Rgb)
     throw std::logic_error("model \"" + model.type + "\": lobe-width parameter \"" +
                            model.lobeWidthParameter + "\" is not a number or pair parameter of the model");
   const double scale = model.widerWhenLarger ? factor : 1.0 / factor;
-  json& value = parsed.completed[model.lobeWidthParameter];
+  ValidatedMaterial scaled = material;
+  json& value = scaled.completed[model.lobeWidthParameter];
   if (value.is_array()) {
     for (json& component : value) component = width->range.clamp(component.get<double>() * scale);
   } else {
     value = width->range.clamp(value.get<double>() * scale);
   }
-  return parsed.completed;
+  // Clamped into the spec's range, so the parse cannot fail; it gives the typed value its form.
+  scaled.parameters.set(width->name, parseValue(*width, value));
+  return scaled;
+}
+
+std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor) {
+  auto scaled = withScaledRoughness(validateMaterial(material), factor);
+  return scaled ? std::optional<json>(std::move(scaled->completed)) : std::nullopt;
+}
+
+std::optional<ValidatedMaterial> withMismatchedRoughness(const ValidatedMaterial& material, double factor) {
+  auto rougher = withScaledRoughness(material, factor);
+  if (!rougher || rougher->completed != material.completed) return rougher;
+  return withScaledRoughness(material, 1.0 / factor);
 }
 
 std::optional<nlohmann::json> withMismatchedRoughness(const nlohmann::json& material, double factor) {
-  auto rougher = withScaledRoughness(material, factor);
-  if (!rougher || *rougher != completeMaterial(material)) return rougher;
-  return withScaledRoughness(material, 1.0 / factor);
+  auto mismatched = withMismatchedRoughness(validateMaterial(material), factor);
+  return mismatched ? std::optional<json>(std::move(mismatched->completed)) : std::nullopt;
 }
 
 }  // namespace scatterlab

@@ -4,6 +4,7 @@
 // defaults (completeMaterial) or made rougher for the roughness-mismatch negative control.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,14 +21,21 @@ namespace scatterlab {
 constexpr int MaxMaterialNesting = 8;
 
 // A material description validated against its model's spec: the model, the parameters with
-// every default filled in, and the completed description.
+// every default filled in, and the completed description. The typed value a material becomes
+// once, where it is read; the builders and the negative controls below take it as it is, so a
+// material is not validated again on its way through a command.
 struct ValidatedMaterial {
   const MaterialModel* model = nullptr;
   MaterialParameters parameters;
   nlohmann::json completed;  // the material as given, plus every default that applies
+
+  bool isSubsurface() const { return model->kind == MaterialKind::Subsurface; }
 };
 // Throws MaterialError on any invalid description (any kind of model).
 ValidatedMaterial validateMaterial(const nlohmann::json& material);
+// How many times validateMaterial has run in this process (top-level calls and nested
+// materials alike): what the tests that follow one material through a command count.
+uint64_t materialValidationCount();
 
 // Checks a model's spec as a whole, as the validation of its materials relies on it: a type and
 // parameter names that are present and distinct, every default a valid value of its parameter,
@@ -44,6 +52,7 @@ MaterialError nestedMaterialError(const MaterialError& error, const std::string&
 // Builds the BSDF a material describes; throws MaterialError on any invalid description, and
 // for a material that is not a BSDF (a subsurface material).
 std::unique_ptr<BsdfModel> makeBsdf(const nlohmann::json& material);
+std::unique_ptr<BsdfModel> makeBsdf(const ValidatedMaterial& material);
 
 // The same material with every default filled in (validated; throws MaterialError), so that
 // what is printed is exactly what was built.
@@ -54,10 +63,12 @@ nlohmann::json completeMaterial(const nlohmann::json& material);
 // the allowed range, every default filled in; nullopt for models without one. The
 // roughness-mismatch negative control samples from it.
 std::optional<nlohmann::json> withScaledRoughness(const nlohmann::json& material, double factor);
+std::optional<ValidatedMaterial> withScaledRoughness(const ValidatedMaterial& material, double factor);
 
 // The material for the roughness-mismatch negative control: `factor` (> 1) times rougher, or
 // as much smoother when the roughness is at its range limit (where scaling up would change
 // nothing and the control would prove nothing); nullopt for models without a lobe width.
 std::optional<nlohmann::json> withMismatchedRoughness(const nlohmann::json& material, double factor);
+std::optional<ValidatedMaterial> withMismatchedRoughness(const ValidatedMaterial& material, double factor);
 
 }  // namespace scatterlab

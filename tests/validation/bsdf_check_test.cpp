@@ -32,6 +32,62 @@ TEST(BsdfCheck, WhiteLambertianPassesEverythingIncludingFurnace) {
   EXPECT_EQ(r.rows.size(), 3u * 7u + 1u);
 }
 
+// The furnace limit of a model exact by construction is the quadrature's own error: far below
+// 1e-6 for the cosine lobe (the error estimate of cos/pi over the cells, plus 1e-9 round-off).
+TEST(BsdfCheck, ExactModelsFurnaceLimitIsTheQuadraturesOwnError) {
+  const CheckReport r = runBsdfChecks(LambertianBsdf(Rgb(1.0)), "white", quickOptions());
+  for (const double theta : {0.0, 60.0, 89.9}) {
+    const CheckRow* furnace = r.find("furnace", theta);
+    ASSERT_NE(furnace, nullptr);
+    EXPECT_LT(furnace->threshold, 1e-6) << furnace->note;
+    EXPECT_TRUE(furnace->passed) << furnace->note;
+  }
+}
+
+// A white mirror (a perfect conductor, k = 1e8) reflects 1 - O(1e-16): its furnace row passes
+// at the round-off limit, with no quadrature in it (a delta lobe).
+TEST(BsdfCheck, PerfectMirrorPassesTheFurnaceToRoundOff) {
+  const SmoothConductorBsdf mirror(Rgb(1.0), Rgb(1e8));
+  ASSERT_TRUE(mirror.isLossless());
+  const CheckReport r = runBsdfChecks(mirror, "perfect-mirror", quickOptions());
+  EXPECT_TRUE(r.passed()) << formatTable(r);
+  const CheckRow* furnace = r.find("furnace", 60);
+  ASSERT_NE(furnace, nullptr);
+  EXPECT_LT(furnace->threshold, 3e-9);  // 1e-9 accuracy + 1e-9 round-off + no quadrature
+  EXPECT_FALSE(SmoothConductorBsdf(Rgb(1.0), Rgb(1e3)).isLossless());  // F = 1 - 4e-6 at normal incidence
+}
+
+// Negative control: a Lambertian of albedo 0.999 that claims to be lossless. Everything about
+// its sampling is right, so only the furnace rows may fail, and they must: 0.1% is far beyond
+// an exact model's limit.
+class LosslessClaimLambertian final : public BsdfModel {
+ public:
+  explicit LosslessClaimLambertian(double albedo) : lambertian_(Rgb(albedo)) {}
+  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
+    return lambertian_.eval(wi, wo, mode);
+  }
+  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
+    return lambertian_.pdf(wi, wo, mode);
+  }
+  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
+                                   TransportMode mode) const override {
+    return lambertian_.sample(wi, uLobe, u, mode);
+  }
+  LobeFlags flags() const override { return lambertian_.flags(); }
+  bool isLossless() const override { return true; }
+
+ private:
+  LambertianBsdf lambertian_;
+};
+
+TEST(BsdfCheck, LosslessClaimAThousandthShortFailsOnlyTheFurnace) {
+  const CheckReport r = runBsdfChecks(LosslessClaimLambertian(0.999), "claims-lossless", quickOptions());
+  EXPECT_FALSE(r.passed());
+  for (const CheckRow& row : r.rows)
+    EXPECT_EQ(row.passed, row.test != "furnace")
+        << row.test << " at " << row.wiThetaDeg.value_or(-1) << ": " << row.note;
+}
+
 TEST(BsdfCheck, ColouredLambertianAlbedoIsItsAlbedo) {
   const CheckReport r = runBsdfChecks(LambertianBsdf(Rgb(0.25, 0.5, 0.75)), "coloured", quickOptions());
   EXPECT_TRUE(r.passed()) << formatTable(r);

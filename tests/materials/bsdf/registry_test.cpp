@@ -430,3 +430,29 @@ TEST(MaterialCatalog, RangesDescribeTheirEnds) {
 
 }  // namespace
 }  // namespace scatterlab
+
+namespace scatterlab {
+namespace {
+
+// The typed value carries a material through the builders and the roughness-mismatch control
+// without a second validation, and gives what the JSON route gives.
+TEST(ValidatedMaterial, IsBuiltAndMadeRougherWithoutValidatingAgain) {
+  const nlohmann::json material = {{"type", "conductor"}, {"alpha", {0.3, 0.2}}, {"metal", "Au"}};
+  const uint64_t before = materialValidationCount();
+  const ValidatedMaterial validated = validateMaterial(material);
+  const auto bsdf = makeBsdf(validated);
+  const auto rougher = withMismatchedRoughness(validated, 1.1);
+  ASSERT_TRUE(rougher.has_value());
+  const auto rougherBsdf = makeBsdf(*rougher);
+  EXPECT_EQ(materialValidationCount() - before, 1u);
+
+  EXPECT_EQ(rougher->completed, *withMismatchedRoughness(material, 1.1));
+  EXPECT_DOUBLE_EQ(rougher->parameters.pair("alpha").x, 0.3 * 1.1);
+  EXPECT_DOUBLE_EQ(rougher->parameters.pair("alpha").y, 0.2 * 1.1);
+  const Vec3d wi = glm::normalize(Vec3d(0.3, 0.1, 0.9)), wo = glm::normalize(Vec3d(-0.2, 0.1, 0.95));
+  EXPECT_EQ(rougherBsdf->eval(wi, wo), makeBsdf(*withMismatchedRoughness(material, 1.1))->eval(wi, wo));
+  EXPECT_EQ(bsdf->eval(wi, wo), makeBsdf(material)->eval(wi, wo));
+}
+
+}  // namespace
+}  // namespace scatterlab

@@ -1,6 +1,6 @@
 // ln Gamma and Beta (materials/core/special_functions.h) against the standard library and
 // against the Beta function's defining integral by quadrature; and their Jet derivatives
-// against central differences.
+// against central differences. The inverse error functions against std::erf and std::erfc.
 #include "materials/core/special_functions.h"
 
 #include <ceres/jet.h>
@@ -64,6 +64,28 @@ TEST(SpecialFunctions, JetDerivativesMatchCentralDifferences) {
   };
   EXPECT_NEAR(beta.v[0], (betaDouble(1.7 + h, 4.2) - betaDouble(1.7 - h, 4.2)) / (2 * h), 1e-8);
   EXPECT_NEAR(beta.v[1], (betaDouble(1.7, 4.2 + h) - betaDouble(1.7, 4.2 - h)) / (2 * h), 1e-8);
+}
+
+TEST(InverseErrorFunction, ErfOfErfinvIsIdentity) {
+  // A few ulps: erf itself rounds, and |z| > 1/2 is solved through erfc(y) = 1 - |z|.
+  for (double z = -0.999; z < 1.0; z += 0.001) EXPECT_NEAR(std::erf(erfinv(z)), z, 1e-15) << "z " << z;
+  for (const double z : {1e-300, 1e-12, -1e-12}) EXPECT_NEAR(erfinv(z) / z, SqrtPi / 2.0, 1e-15);
+}
+
+TEST(InverseErrorFunction, InverseErfcKeepsRelativePrecisionInTheTails) {
+  for (double q = 1e-300; q < 1.0; q *= 7.3) {
+    const double y = inverseErfc(q);
+    // The root lies within 1e-14 relative of y: erfc brackets q there. (Compared through y,
+    // because erfc(y) / q amplifies one ulp of y by 2 y^2 ~ 1400 at q = 1e-300.)
+    EXPECT_GT(std::erfc(y * (1.0 - 1e-14)), q) << "q " << q;
+    EXPECT_LT(std::erfc(y * (1.0 + 1e-14)), q) << "q " << q;
+    // erfc(-y) = 2 - erfc(y); 2 - q rounds, so the mirrored argument is the representable one.
+    const double mirrored = 2.0 - q;
+    EXPECT_NEAR(inverseErfc(mirrored), -inverseErfc(2.0 - mirrored), 1e-15 * y);
+  }
+  EXPECT_EQ(inverseErfc(1.0), 0.0);
+  EXPECT_TRUE(std::isfinite(inverseErfc(0.0)));
+  EXPECT_TRUE(std::isfinite(inverseErfc(2.0)));
 }
 
 }  // namespace
