@@ -158,8 +158,16 @@ void printReport(const FitCommandOptions& options, const LoadedData& data, const
   const Metric metric = *parseMetric(options.metric);
   std::printf("metric: %s; robust loss: %s", describe(metric).c_str(), options.robust.c_str());
   if (result.robustScale > 0) std::printf(" (scale %.4g)", result.robustScale);
-  std::printf("\ngrid: %zu points on %zu samples; starts on %zu samples:\n", result.gridPoints,
-              result.gridSamples, result.startSamples);
+  std::printf("\ngrid: %zu points on %zu samples", result.gridPoints, result.gridSamples);
+  // Counted, never silent (fitting/brdf_fit.h): points and starts left out for a cost that is
+  // not finite.
+  if (result.gridNonFinitePoints > 0)
+    std::printf(" (%zu left out: cost not finite)", result.gridNonFinitePoints);
+  std::printf("; starts on %zu samples", result.startSamples);
+  if (result.nonFiniteStarts > 0)
+    std::printf(" (%zu of %zu ended on a cost that is not finite)", result.nonFiniteStarts,
+                result.starts.size());
+  std::printf(":\n");
   std::printf("  %-5s %14s %14s %10s  %s\n", "start", "initial cost", "final cost", "iterations",
               "termination");
   for (size_t s = 0; s < result.starts.size(); ++s)

@@ -21,6 +21,11 @@ FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMate
     verdict.good = false;
     verdict.problems.push_back(std::move(problem));
   };
+  // First: nothing else about such a fit means anything (fitting/brdf_fit.h).
+  if (!result.finiteResiduals)
+    fail(
+        "the residuals at the fitted parameters are not finite (the model's values are not finite on the "
+        "data): no cost, no error bars");
   if (!result.final.converged)
     fail("did not converge: " + result.final.termination + " after " +
          std::to_string(result.final.iterations) + " iterations (" + result.final.message + ")");

@@ -18,9 +18,9 @@ struct FitVerdict {
   std::vector<std::string> problems;  // why not, in words
 };
 
-// Poor when Ceres did not converge, a channel's relative error exceeds maxRelativeError, the
-// fit is rank deficient (a direction of parameters the data cannot determine: its values are
-// arbitrary along it, so the written material means nothing there), or the fitted sum has no
+// Poor when the residuals at the result are not finite, Ceres did not converge, a channel's relative error
+// exceeds maxRelativeError, the fit is rank deficient (a direction of parameters the data cannot determine:
+// its values are arbitrary along it, so the written material means nothing there), or the fitted sum has no
 // registry form.
 FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMaterial& written,
                     double maxRelativeError);

@@ -154,7 +154,10 @@ RenderAgreement compareEstimators(const MaterialFactory& material, uint64_t seed
   const std::vector<bool> ground = offSphere(scene);
   const auto onGround = [&](int x, int y) { return bool(ground[size_t(y) * Width + x]); };
   RenderAgreement result;
-  const auto count = [&](const RenderResult& r) { result.nonFiniteSamples += r.statistics.nonFiniteSamples; };
+  const auto count = [&](const RenderResult& r) {
+    result.nonFiniteSamples += r.statistics.nonFiniteSamples;
+    result.negativeSamples += r.statistics.negativeSamples;
+  };
 
   const PilotedRender path = renderPiloted(scene, IntegratorKind::Path, spp, seed + 1, FullDepth);
   const RenderResult bdpt =
@@ -229,10 +232,11 @@ CheckReport renderAgreementReport(const std::string& material, const RenderAgree
   CheckRow finite;
   finite.material = material;
   finite.test = "render finite";
-  finite.statistic = double(agreement.nonFiniteSamples);
+  finite.statistic = double(agreement.droppedSamples());
   finite.threshold = 0.0;
-  finite.passed = agreement.nonFiniteSamples == 0;
-  finite.note = "non-finite samples over every render";
+  finite.passed = agreement.droppedSamples() == 0;
+  finite.note = "samples dropped over every render (" + std::to_string(agreement.nonFiniteSamples) +
+                " not finite, " + std::to_string(agreement.negativeSamples) + " negative)";
   report.rows.push_back(std::move(finite));
   return report;
 }

@@ -77,6 +77,8 @@ struct RenderAgreement {
   std::vector<EstimatorPair> pairs;
   ConvergenceSpeed speed;
   uint64_t nonFiniteSamples = 0;  // over every render
+  uint64_t negativeSamples = 0;   // over every render
+  uint64_t droppedSamples() const { return nonFiniteSamples + negativeSamples; }
 };
 
 // A material, built as often as scenes need it.

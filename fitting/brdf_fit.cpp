@@ -71,8 +71,13 @@ SolveSummary solveOnce(CompressedCostFunction& cost, const FitModel& model, std:
   solverOptions.callbacks.push_back(&callback);
   ceres::Solver::Summary summary;
   ceres::Solve(solverOptions, &ceresProblem, &summary);
-  out.initialCost = 2.0 * summary.initial_cost;
-  out.finalCost = 2.0 * summary.final_cost;
+  // Ceres leaves a cost it could not evaluate at -1: a sum of squares is never negative, so
+  // that is NaN here (counted, never chosen as the best start: brdf_fit.h).
+  const auto sumOfSquares = [](double ceresCost) {
+    return ceresCost >= 0 ? 2.0 * ceresCost : std::numeric_limits<double>::quiet_NaN();
+  };
+  out.initialCost = sumOfSquares(summary.initial_cost);
+  out.finalCost = sumOfSquares(summary.final_cost);
   out.iterations = int(summary.iterations.size()) - 1;
   out.termination = terminationName(summary.termination_type);
   out.message = summary.message;
@@ -227,9 +232,13 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
   const BrdfSamples gridSet = stratifiedSubset(samples, options.gridSamples, options.seed);
   result.gridSamples = gridSet.size();
   const GridSearch search = searchGrid(model, gridSet, options.metric, options.gridBudget, options.threads);
-  result.gridPoints = search.points.size();
+  result.gridPoints = search.points.size() + search.nonFinitePoints;
+  result.gridNonFinitePoints = search.nonFinitePoints;
   const std::vector<GridPoint> starts = distinctStarts(search, std::max(options.starts, 1));
-  if (starts.empty()) throw std::runtime_error("the initial grid gave no point with a finite cost");
+  if (starts.empty())
+    throw std::runtime_error("fit: none of the " + std::to_string(result.gridPoints) +
+                             " points of the initial grid has a finite cost: the model's values are not "
+                             "finite on the data");
 
   // 2. Multi-start on a subset.
   const BrdfSamples startSet = stratifiedSubset(samples, options.startSamples, options.seed);
@@ -255,6 +264,9 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
     const std::string stage = "start " + std::to_string(s + 1) + "/" + std::to_string(starts.size());
     result.starts.push_back(solve(startProblem, starts[s].x, options, stage));
   }
+  result.nonFiniteStarts =
+      size_t(std::count_if(result.starts.begin(), result.starts.end(),
+                           [](const SolveSummary& s) { return !std::isfinite(s.finalCost); }));
   const auto best =
       std::min_element(result.starts.begin(), result.starts.end(), [](const auto& a, const auto& b) {
         const double ca = std::isfinite(a.finalCost) ? a.finalCost : std::numeric_limits<double>::infinity();
@@ -281,9 +293,14 @@ FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOp
     result.rms[c] = std::sqrt(sums.squaredError[c] / std::max(sums.weight, 1e-300));
     result.relativeError[c] = std::sqrt(sums.squaredError[c] / std::max(sums.squaredData[c], 1e-300));
   }
+  // Residuals that are not finite at the result fail the fit (brdf_fit.h): no cost, no error
+  // bars (the normal equations hold NaN), and the verdict says why.
+  result.finiteResiduals = std::isfinite(result.final.finalCost) && std::isfinite(sums.squaredError[0]) &&
+                           std::isfinite(sums.squaredError[1]) && std::isfinite(sums.squaredError[2]);
   const double dof = double(result.observations) - double(p);
-  result.sigma2 = dof > 0 ? result.final.finalCost / dof : std::numeric_limits<double>::quiet_NaN();
-  computeCovariance(model, equations, result);
+  result.sigma2 = dof > 0 && result.finiteResiduals ? result.final.finalCost / dof
+                                                    : std::numeric_limits<double>::quiet_NaN();
+  if (result.finiteResiduals) computeCovariance(model, equations, result);
   for (size_t j = 0; j < p; ++j) {
     const FitParameter& fp = model.parameters()[j];
     ParameterEstimate e;
@@ -352,8 +369,13 @@ nlohmann::json toJson(const FitResult& result, const FitModel& model, const FitO
           {"covariance_available", result.covarianceAvailable},
           {"rank_deficient", result.rankDeficient},
           {"unidentified", result.unidentified},
-          {"grid", {{"points", result.gridPoints}, {"samples", result.gridSamples}}},
+          {"finite_residuals", result.finiteResiduals},
+          {"grid",
+           {{"points", result.gridPoints},
+            {"samples", result.gridSamples},
+            {"non_finite_points", result.gridNonFinitePoints}}},
           {"starts", starts},
+          {"non_finite_starts", result.nonFiniteStarts},
           {"start_samples", result.startSamples},
           {"seconds", result.seconds}};
 }

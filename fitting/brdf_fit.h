@@ -19,6 +19,12 @@
 //     bars are then those of the pseudo-inverse and marked as such.
 // Every random choice (the subsets) is keyed by `seed`, and every sum is taken in a fixed
 // order: the same inputs give the same result for any thread count.
+//
+// Nothing fails silently (docs/reliability.md, "Messages"): grid points whose cost is not
+// finite are left out and counted (initialization.h), so are starts whose run ends on a cost
+// that is not finite (the best start is chosen among the others); and a result whose residuals
+// are not finite is marked (finiteResiduals), without error bars, and judged a failed fit
+// (app/fit_verdict.h). When no grid point has a finite cost, fitBrdf throws.
 #pragma once
 
 #include <cstdint>
@@ -61,7 +67,7 @@ struct FitOptions {
 // One Ceres run.
 struct SolveSummary {
   std::vector<double> initial, final;
-  double initialCost = 0, finalCost = 0;  // S = 2 x Ceres's cost
+  double initialCost = 0, finalCost = 0;  // S = 2 x Ceres's cost; NaN when Ceres could not evaluate it
   int iterations = 0;
   std::string termination;  // CONVERGENCE, NO_CONVERGENCE, FAILURE
   std::string message;      // Ceres's reason
@@ -82,6 +88,9 @@ struct FitResult {
   SolveSummary final;  // the refinement on all samples (or the best start)
   std::vector<SolveSummary> starts;
   size_t gridPoints = 0, gridSamples = 0, startSamples = 0, samples = 0;
+  size_t gridNonFinitePoints = 0;    // of gridPoints, left out: cost not finite (expected 0)
+  size_t nonFiniteStarts = 0;        // of starts, ended on a cost that is not finite (expected 0)
+  bool finiteResiduals = true;       // false: the residuals at x are not finite, the fit failed
   size_t observations = 0;           // N
   double sigma2 = 0;                 // S / (N - p)
   double robustScale = 0;            // 0 without a robust loss
@@ -93,7 +102,8 @@ struct FitResult {
   double seconds = 0;
 };
 
-// Throws std::invalid_argument when `samples` is empty.
+// Throws std::invalid_argument when `samples` is empty, std::runtime_error when no grid point
+// has a finite cost.
 FitResult fitBrdf(const FitModel& model, const BrdfSamples& samples, const FitOptions& options);
 
 // The result as JSON: parameters with error bars, cost, errors, iterations, starts.

@@ -276,6 +276,10 @@ GridSearch searchGrid(const FitModel& model, const BrdfSamples& samples, Metric 
                         }
                       });
   });
+  // A point whose cost is not finite is counted and left out (header comment): it could start
+  // no fit, and NaN has no place in the ordering below.
+  search.nonFinitePoints =
+      size_t(std::erase_if(search.points, [](const GridPoint& point) { return !std::isfinite(point.cost); }));
   // Ties (equal costs) keep the grid's order, so the choice is reproducible.
   std::stable_sort(search.points.begin(), search.points.end(),
                    [](const GridPoint& a, const GridPoint& b) { return a.cost < b.cost; });
@@ -286,7 +290,6 @@ std::vector<GridPoint> distinctStarts(const GridSearch& search, int count) {
   std::vector<GridPoint> starts;
   for (const GridPoint& point : search.points) {
     if (int(starts.size()) >= count) break;
-    if (!std::isfinite(point.cost)) continue;
     const bool neighbour = std::any_of(starts.begin(), starts.end(), [&](const GridPoint& chosen) {
       for (size_t k = 0; k < point.unit.size(); ++k)
         if (std::abs(point.unit[k] - chosen.unit[k]) > 1.01 * search.cellWidth) return false;

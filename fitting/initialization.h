@@ -10,7 +10,10 @@
 // solved by projected Gauss-Seidel, which converges for the positive semi-definite normal
 // equations. The point's cost is then the metric's own. For lobes of one type repeated
 // (--lobes N) only grid points whose first shape parameter increases from lobe to lobe are
-// kept, so that relabelled copies of one configuration are not tried twice.
+// kept, so that relabelled copies of one configuration are not tried twice. A point whose cost
+// is not finite (the model's value or the scales' solution is not finite there) cannot start a
+// fit: it is left out and counted, and the count reaches the fit's result (brdf_fit.h), so
+// that no point is lost without a number.
 #pragma once
 
 #include <cstddef>
@@ -29,7 +32,8 @@ struct GridPoint {
 };
 
 struct GridSearch {
-  std::vector<GridPoint> points;  // sorted by cost, best first
+  std::vector<GridPoint> points;  // those with a finite cost, sorted by cost, best first
+  size_t nonFinitePoints = 0;     // points left out because their cost is not finite
   size_t dimensions = 0;
   double cellWidth = 1;  // of the grid in unit coordinates
 };

@@ -105,10 +105,20 @@ class Bdpt {
     const uint64_t pixel = uint64_t(y) * uint64_t(scene_.camera().width()) + uint64_t(x);
     SampleStream cameraRandom(settings_.seed, pixel, uint64_t(sample), StreamPart::Camera);
     const Vec2d film = Vec2d(x + 0.5, y + 0.5) + settings_.filter.sampleOffset(cameraRandom);
-    traceCameraSubpath(scene_, film, cameraRandom, camera_, cameraPath);
+    const SampleValue cameraWalk = traceCameraSubpath(scene_, film, cameraRandom, camera_, cameraPath);
     SampleStream lightRandom(settings_.seed, pixel, uint64_t(sample), StreamPart::LightPath);
-    traceLightSubpath(scene_, emission_, lightRandom, light_, lightPath);
+    const SampleValue lightWalk = traceLightSubpath(scene_, emission_, lightRandom, light_, lightPath);
     unit.addVertices(cameraPath.size() - 1 + (lightPath.empty() ? 0 : lightPath.size() - 1));
+    // A subpath that ended on an invalid weight drops the whole unit (splat_film.h): every
+    // strategy's path is made of both.
+    if (cameraWalk != SampleValue::Valid) {
+      unit.drop(cameraWalk);
+      return;
+    }
+    if (lightWalk != SampleValue::Valid) {
+      unit.drop(lightWalk);
+      return;
+    }
     if (cameraPath.size() > 1 && !cameraPath[1].atInfinity)
       unit.setFirstHit(firstAlbedo(cameraPath), cameraPath[1].normal());
 

@@ -52,9 +52,13 @@ RenderResult renderLightTracing(const Scene& scene, const RenderSettings& settin
     // ---- One light path, every vertex seen by the eye.
     thread_local std::vector<PathVertex> path;
     SampleStream lightRandom(settings.seed, pixel, uint64_t(sample), StreamPart::LightPath);
-    traceLightSubpath(scene, emission, lightRandom, lightSubpath, path);
+    const SampleValue walk = traceLightSubpath(scene, emission, lightRandom, lightSubpath, path);
     if (path.empty()) return;
     unit.addVertices(path.size() - 1);
+    if (walk != SampleValue::Valid) {
+      unit.drop(walk);
+      return;
+    }
     for (size_t i = 1; i < path.size(); ++i) {
       if (!path[i].connectible()) continue;
       if (const std::optional<CameraConnection> c = connectToCamera(scene, path[i], settings.filter))

@@ -80,10 +80,7 @@ std::string toString(IntegratorKind kind) {
 }
 
 SampleValue classifySample(const PathSample& path) {
-  if (path.invalid != SampleValue::Valid) return path.invalid;
-  if (const SampleValue radiance = classifyValue(path.radiance); radiance != SampleValue::Valid)
-    return radiance;
-  return classifyValue(path.albedo);
+  return classifySample(path.invalid, {path.radiance, path.albedo});
 }
 
 RenderResult render(const Scene& scene, const RenderSettings& settings,

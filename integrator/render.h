@@ -80,6 +80,13 @@ struct RenderStatistics {
     nonFiniteSamples += value == SampleValue::NonFinite;
     negativeSamples += value == SampleValue::Negative;
   }
+  // Adds the counts of a part of the same render (a chunk of units, a pass); not its seconds.
+  void add(const RenderStatistics& part) {
+    samples += part.samples;
+    vertices += part.vertices;
+    nonFiniteSamples += part.nonFiniteSamples;
+    negativeSamples += part.negativeSamples;
+  }
 };
 
 struct RenderResult {

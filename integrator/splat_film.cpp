@@ -28,13 +28,14 @@ SplatFilm::Unit SplatFilm::chunkUnits(int index) const {
           std::min((slice + 1) * SliceSamples, settings_.samplesPerPixel)};
 }
 
-bool SplatFilm::spreadSplats(const UnitRecorder& unit, std::vector<Chunk::Splat>& scratch,
-                             Chunk& chunk) const {
+SampleValue SplatFilm::spreadSplats(const UnitRecorder& unit, std::vector<Chunk::Splat>& scratch,
+                                    Chunk& chunk) const {
   scratch.clear();
   const PixelFilter& filter = settings_.filter;
   const double reach = filter.radius();
   for (const UnitRecorder::FilmSplat& s : unit.splats_) {
-    if (!isFinite(s.value) || !std::isfinite(s.film.x) || !std::isfinite(s.film.y)) return false;
+    if (const SampleValue value = classifyValue(s.value); value != SampleValue::Valid) return value;
+    if (!std::isfinite(s.film.x) || !std::isfinite(s.film.y)) return SampleValue::NonFinite;
     if (s.value == Rgb(0.0)) continue;
     // Pixels whose centre lies within the filter's reach of the film point.
     const int xLo = std::max(int(std::ceil(s.film.x - 0.5 - reach)), 0);
@@ -61,7 +62,7 @@ bool SplatFilm::spreadSplats(const UnitRecorder& unit, std::vector<Chunk::Splat>
     while (i < scratch.size() && scratch[i].pixel == total.pixel) total.value += scratch[i++].value;
     chunk.splats.push_back(total);
   }
-  return true;
+  return SampleValue::Valid;
 }
 
 void SplatFilm::add(const Chunk& chunk, int index) {
@@ -86,8 +87,7 @@ void SplatFilm::add(const Chunk& chunk, int index) {
     p.splat += s.value;
     p.splatSquares += s.value * s.value;
   }
-  vertices_ += chunk.vertices;
-  nonFinite_ += chunk.nonFinite;
+  statistics_.add(chunk.statistics);
 }
 
 RenderResult SplatFilm::finish(double seconds) const {
@@ -116,8 +116,9 @@ RenderResult SplatFilm::finish(double seconds) const {
     }
   result.statistics.seconds = seconds;
   result.statistics.samples = uint64_t(units);
-  result.statistics.vertices = vertices_;
-  result.statistics.nonFiniteSamples = nonFinite_;
+  result.statistics.vertices = statistics_.vertices;
+  result.statistics.nonFiniteSamples = statistics_.nonFiniteSamples;
+  result.statistics.negativeSamples = statistics_.negativeSamples;
   return result;
 }
 

@@ -14,8 +14,9 @@
 // Same bits for any thread count: the units are cut into chunks (a 16 x 16 tile of pixels times
 // a slice of 8 samples), each chunk records its camera values and splats in order, and the
 // chunks are added to the film one after another in a fixed order, in batches whose chunks run
-// in parallel. A unit with a non-finite value (never expected) contributes nothing and is
-// counted.
+// in parallel. A unit dropped by the film's rule (sample_value.h: a walk that ended on an invalid
+// weight, or a camera value, albedo or splat that is not finite or has a negative channel; never
+// expected) contributes nothing and is counted by kind (RenderStatistics).
 #pragma once
 
 #include <atomic>
@@ -28,6 +29,7 @@
 #include <tbb/task_arena.h>
 
 #include "integrator/render.h"
+#include "integrator/sample_value.h"
 
 namespace scatterlab {
 
@@ -44,6 +46,11 @@ class UnitRecorder {
   // A value at film point `film` (pixels), before the film's 1/N.
   void splat(const Vec2d& film, const Rgb& value) { splats_.push_back({film, value}); }
   void addVertices(uint64_t count) { vertices_ += count; }
+  // A subpath of the unit ended on an invalid weight (subpath.h): the film drops the unit and
+  // counts it by the first such kind.
+  void drop(SampleValue kind) {
+    if (invalid_ == SampleValue::Valid) invalid_ = kind;
+  }
 
  private:
   friend class SplatFilm;
@@ -55,11 +62,13 @@ class UnitRecorder {
     camera_ = albedo_ = Rgb(0.0);
     normal_ = Vec3d(0.0);
     splats_.clear();
+    invalid_ = SampleValue::Valid;
   }
 
   Rgb camera_{0.0}, albedo_{0.0};
   Vec3d normal_{0.0};
   std::vector<FilmSplat> splats_;
+  SampleValue invalid_ = SampleValue::Valid;
   uint64_t vertices_ = 0;
 };
 
@@ -78,8 +87,8 @@ class SplatFilm {
     };
     std::vector<Rgb> camera, albedo;  // per unit, pixel-major within the tile, samples in order
     std::vector<Vec3d> normal;
-    std::vector<Splat> splats;  // per unit, one entry per pixel it reached
-    uint64_t vertices = 0, nonFinite = 0;
+    std::vector<Splat> splats;    // per unit, one entry per pixel it reached
+    RenderStatistics statistics;  // its vertices and dropped units
   };
 
   // Runs trace(x, y, sample, recorder) for every unit of chunk `index` into `chunk`.
@@ -93,9 +102,9 @@ class SplatFilm {
     int x0, y0, x1, y1, sample0, sample1;
   };
   Unit chunkUnits(int index) const;
-  // The unit's splats spread by the filter, summed per pixel, appended to the chunk; false
-  // when a value is not finite.
-  bool spreadSplats(const UnitRecorder& unit, std::vector<Chunk::Splat>& scratch, Chunk& chunk) const;
+  // The unit's splats spread by the filter, summed per pixel, appended to the chunk; not Valid
+  // (and possibly part appended) when a splat's value or film point is not (sample_value.h).
+  SampleValue spreadSplats(const UnitRecorder& unit, std::vector<Chunk::Splat>& scratch, Chunk& chunk) const;
 
   RenderSettings settings_;
   int width_, height_, tilesX_, tilesY_, slices_;
@@ -106,7 +115,7 @@ class SplatFilm {
     Rgb splat{0.0}, splatSquares{0.0};
   };
   std::vector<PixelSums> pixels_;
-  uint64_t vertices_ = 0, nonFinite_ = 0;
+  RenderStatistics statistics_;  // vertices and dropped units
 };
 
 template <typename Trace> void SplatFilm::traceChunk(int index, Chunk& chunk, const Trace& trace) const {
@@ -115,7 +124,7 @@ template <typename Trace> void SplatFilm::traceChunk(int index, Chunk& chunk, co
   chunk.albedo.clear();
   chunk.normal.clear();
   chunk.splats.clear();
-  chunk.vertices = chunk.nonFinite = 0;
+  chunk.statistics = {};
   UnitRecorder recorder;
   std::vector<Chunk::Splat> scratch;
   for (int y = u.y0; y < u.y1; ++y)
@@ -124,8 +133,9 @@ template <typename Trace> void SplatFilm::traceChunk(int index, Chunk& chunk, co
         recorder.clear();
         trace(x, y, s, recorder);
         const size_t splatsBefore = chunk.splats.size();
-        if (isFinite(recorder.camera_) && isFinite(recorder.albedo_) &&
-            spreadSplats(recorder, scratch, chunk)) {
+        SampleValue value = classifySample(recorder.invalid_, {recorder.camera_, recorder.albedo_});
+        if (value == SampleValue::Valid) value = spreadSplats(recorder, scratch, chunk);
+        if (value == SampleValue::Valid) {
           chunk.camera.push_back(recorder.camera_);
           chunk.albedo.push_back(recorder.albedo_);
           chunk.normal.push_back(recorder.normal_);
@@ -134,10 +144,10 @@ template <typename Trace> void SplatFilm::traceChunk(int index, Chunk& chunk, co
           chunk.camera.push_back(Rgb(0.0));
           chunk.albedo.push_back(Rgb(0.0));
           chunk.normal.push_back(Vec3d(0.0));
-          ++chunk.nonFinite;
+          chunk.statistics.count(value);
         }
       }
-  chunk.vertices = recorder.vertices_;
+  chunk.statistics.vertices = recorder.vertices_;
 }
 
 // The render loop of a splatting estimator: trace(x, y, sample, UnitRecorder&) for every unit,

@@ -25,6 +25,9 @@
 // (SampleStream(seed, pixel, k)), photons are traced in fixed chunks (SampleStream(seed,
 // photon, k, Photon)) whose deposits are added in chunk order, and the grid of visible points
 // is built in pixel order.
+//
+// Nothing fails silently: a camera sample or a photon whose weight or value is not finite or
+// negative (sample_value.h) adds nothing and is counted by kind (RenderStatistics).
 #include "integrator/sppm.h"
 
 #include <algorithm>
@@ -40,6 +43,7 @@
 
 #include "integrator/emission.h"
 #include "integrator/path_tracer.h"
+#include "integrator/sample_value.h"
 #include "integrator/subpath.h"
 
 namespace scatterlab {
@@ -136,25 +140,25 @@ class Sppm {
     tbb::task_arena arena(settings_.threads > 0 ? settings_.threads : tbb::task_arena::automatic);
     const int64_t chunks = (photons_ + PhotonsPerChunk - 1) / PhotonsPerChunk;
     std::vector<std::vector<Deposit>> deposits(static_cast<size_t>(chunks));
-    std::vector<uint64_t> chunkVertices(static_cast<size_t>(chunks)),
-        chunkDropped(static_cast<size_t>(chunks));
+    std::vector<RenderStatistics> chunkStatistics(static_cast<size_t>(chunks));
     for (int k = 0; k < iterations; ++k) {
       // ---- 1. Camera pass.
-      std::atomic<uint64_t> vertices{0}, nonFinite{0};
+      std::atomic<uint64_t> vertices{0}, nonFinite{0}, negative{0};
       arena.execute([&] {
         tbb::parallel_for(0, (height_ + RowsPerTask - 1) / RowsPerTask, [&](int task) {
-          uint64_t v = 0, bad = 0;
+          RenderStatistics rows;
           for (int y = task * RowsPerTask; y < std::min(height_, (task + 1) * RowsPerTask); ++y)
-            for (int x = 0; x < width_; ++x) cameraPass(x, y, k, v, bad);
-          vertices += v;
-          nonFinite += bad;
+            for (int x = 0; x < width_; ++x) cameraPass(x, y, k, rows);
+          vertices += rows.vertices;
+          nonFinite += rows.nonFiniteSamples;
+          negative += rows.negativeSamples;
         });
       });
       grid_.build(pixels_);
       // ---- 2. Photon pass, chunks in parallel, deposits added in chunk order.
       arena.execute([&] {
         tbb::parallel_for(int64_t(0), chunks, [&](int64_t c) {
-          photonChunk(c, k, deposits[size_t(c)], chunkVertices[size_t(c)], chunkDropped[size_t(c)]);
+          photonChunk(c, k, deposits[size_t(c)], chunkStatistics[size_t(c)]);
         });
       });
       for (int64_t c = 0; c < chunks; ++c) {
@@ -162,11 +166,11 @@ class Sppm {
           pixels_[d.pixel].phi += d.value;
           ++pixels_[d.pixel].m;
         }
-        vertices_ += chunkVertices[size_t(c)];
-        nonFinite_ += chunkDropped[size_t(c)];
+        statistics_.add(chunkStatistics[size_t(c)]);
       }
-      vertices_ += vertices;
-      nonFinite_ += nonFinite;
+      statistics_.vertices += vertices;
+      statistics_.nonFiniteSamples += nonFinite;
+      statistics_.negativeSamples += negative;
       // ---- 3. Radius reduction.
       for (PixelState& p : pixels_) {
         if (p.m > 0) {
@@ -191,7 +195,9 @@ class Sppm {
     Rgb value;
   };
 
-  void cameraPass(int x, int y, int iteration, uint64_t& vertices, uint64_t& nonFinite) {
+  // One pixel's camera ray of iteration `iteration`; its vertices, and the pixel's sample when
+  // the film's rule drops it (sample_value.h), counted in `statistics`.
+  void cameraPass(int x, int y, int iteration, RenderStatistics& statistics) {
     PixelState& state = pixels_[size_t(y) * width_ + x];
     VisiblePoint& vp = state.point;
     vp.valid = false;
@@ -203,6 +209,7 @@ class Sppm {
     Rgb beta(1.0), direct(0.0), albedo(0.0);
     Vec3d normal(0.0);
     bool emissionCounts = true;  // a camera ray or a delta bounce: nothing sampled the light
+    SampleValue invalid = SampleValue::Valid;
     for (int bounce = 0;; ++bounce) {
       const std::optional<SurfaceInteraction> hit = scene_.intersect(ray);
       if (!hit) {
@@ -210,7 +217,7 @@ class Sppm {
           direct += beta * scene_.escapedRadiance(ray.direction, [](double) { return 1.0; });
         break;
       }
-      ++vertices;
+      ++statistics.vertices;
       const Vec3d wi = -ray.direction;
       if (bounce == 0) normal = hit->geometry.normal;
       if (hit->light >= 0) {
@@ -238,11 +245,15 @@ class Sppm {
       }
       if (!sample || sample->weight == Rgb(0.0)) break;
       beta *= sample->weight;
+      // A weight that is not finite or negative ends the ray, and the film drops the sample (the
+      // path tracer's rule, path_tracer.cpp).
+      if (invalid = classifyValue(beta); invalid != SampleValue::Valid) break;
       emissionCounts = sample->isDelta();
       ray = spawnRay(hit->point, hit->geometry.normal, sample->wo);
     }
-    if (!isFinite(direct) || !isFinite(beta) || !isFinite(albedo)) {
-      ++nonFinite;
+    if (const SampleValue value = classifySample(invalid, {direct, beta, albedo});
+        value != SampleValue::Valid) {
+      statistics.count(value);
       vp.valid = false;
       return;
     }
@@ -251,22 +262,29 @@ class Sppm {
     state.normal += normal;
   }
 
-  void photonChunk(int64_t chunk, int iteration, std::vector<Deposit>& out, uint64_t& vertices,
-                   uint64_t& dropped) const {
+  // The deposits of the photons of chunk `chunk`, in order; a photon the film's rule drops
+  // (its walk ended on an invalid weight, or a deposit is not finite or negative) deposits
+  // nothing and is counted in `statistics`, with every photon's vertices.
+  void photonChunk(int64_t chunk, int iteration, std::vector<Deposit>& out,
+                   RenderStatistics& statistics) const {
     thread_local std::vector<PathVertex> path;
     thread_local std::vector<Deposit> photon;
     out.clear();
-    vertices = dropped = 0;
+    statistics = {};
     const int maxDepth = settings_.integrator.maxDepth;
     const SubpathSettings subpath{maxDepth, settings_.integrator.rouletteDepth};
     const int64_t first = chunk * PhotonsPerChunk, last = std::min(photons_, first + PhotonsPerChunk);
     for (int64_t index = first; index < last; ++index) {
       SampleStream random(settings_.seed, uint64_t(index), uint64_t(iteration), StreamPart::Photon);
-      traceLightSubpath(scene_, emission_, random, subpath, path);
+      const SampleValue walk = traceLightSubpath(scene_, emission_, random, subpath, path);
       if (path.empty()) continue;
-      vertices += path.size() - 1;
+      statistics.vertices += path.size() - 1;
+      if (walk != SampleValue::Valid) {
+        statistics.count(walk);
+        continue;
+      }
       photon.clear();
-      bool finite = true;
+      SampleValue value = SampleValue::Valid;
       for (size_t i = 2; i < path.size(); ++i) {
         const PathVertex& v = path[i];
         if (v.hit.light >= 0) continue;
@@ -279,15 +297,15 @@ class Sppm {
           if (glm::dot(v.normal(), vp.hit.geometry.normal) <= 0) return;
           const Rgb f = vp.hit.bsdf().eval(vp.wi, v.wi, TransportMode::Radiance);
           if (f == Rgb(0.0)) return;
-          const Rgb value = v.beta * f;
-          finite &= isFinite(value);
-          photon.push_back({pixel, value});
+          const Rgb deposit = v.beta * f;
+          if (value == SampleValue::Valid) value = classifyValue(deposit);
+          photon.push_back({pixel, deposit});
         });
       }
-      if (finite) {
+      if (value == SampleValue::Valid) {
         out.insert(out.end(), photon.begin(), photon.end());
       } else {
-        ++dropped;
+        statistics.count(value);
       }
     }
   }
@@ -308,8 +326,9 @@ class Sppm {
       }
     result.statistics.seconds = seconds;
     result.statistics.samples = uint64_t(width_) * uint64_t(height_) * uint64_t(iterations);
-    result.statistics.vertices = vertices_;
-    result.statistics.nonFiniteSamples = nonFinite_;
+    result.statistics.vertices = statistics_.vertices;
+    result.statistics.nonFiniteSamples = statistics_.nonFiniteSamples;
+    result.statistics.negativeSamples = statistics_.negativeSamples;
     return result;
   }
 
@@ -320,7 +339,7 @@ class Sppm {
   int64_t photons_;
   std::vector<PixelState> pixels_;
   VisiblePointGrid grid_;
-  uint64_t vertices_ = 0, nonFinite_ = 0;
+  RenderStatistics statistics_;  // vertices, and dropped camera samples and photons
 };
 
 }  // namespace

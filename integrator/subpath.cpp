@@ -37,16 +37,17 @@ double reverseDensity(double pdf, bool delta, const PathVertex& vertex, const Pa
 }
 
 // Continues the subpath in `path` (its start already in it) along `ray`, appending surface
-// vertices: the random walk both ends share, in their transport mode.
-void walk(const Scene& scene, Ray ray, Rgb beta, RayDensity density, TransportMode mode, SampleStream& random,
-          const SubpathSettings& settings, std::vector<PathVertex>& path) {
+// vertices: the random walk both ends share, in their transport mode. Returns Valid, or the
+// kind of the invalid throughput it ended on (subpath.h).
+SampleValue walk(const Scene& scene, Ray ray, Rgb beta, RayDensity density, TransportMode mode,
+                 SampleStream& random, const SubpathSettings& settings, std::vector<PathVertex>& path) {
   const int start = int(path.size());  // vertices before the walk's first
   const TransportMode reverseMode =
       mode == TransportMode::Radiance ? TransportMode::Importance : TransportMode::Radiance;
   const double startScale = std::max({beta.x, beta.y, beta.z});
   double etaScale = 1.0;
   for (int bounces = 0;; ++bounces) {
-    if (int(path.size()) - start >= settings.maxVertices) return;
+    if (int(path.size()) - start >= settings.maxVertices) return SampleValue::Valid;
     const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
       if (mode == TransportMode::Radiance) {  // the camera ray escapes: the lights at infinity
@@ -58,7 +59,7 @@ void walk(const Scene& scene, Ray ray, Rgb beta, RayDensity density, TransportMo
         escaped.pdfForward = density.delta ? 1.0 : density.pdf;
         path.push_back(escaped);
       }
-      return;
+      return SampleValue::Valid;
     }
     PathVertex vertex;
     vertex.hit = *hit;
@@ -66,20 +67,23 @@ void walk(const Scene& scene, Ray ray, Rgb beta, RayDensity density, TransportMo
     vertex.beta = beta;
     vertex.pdfForward = arrivalDensity(density, path.back(), *hit, ray.direction);
     path.push_back(vertex);
-    if (hit->light >= 0) return;  // emitters reflect nothing
-    if (int(path.size()) - start >= settings.maxVertices) return;
+    if (hit->light >= 0) return SampleValue::Valid;  // emitters reflect nothing
+    if (int(path.size()) - start >= settings.maxVertices) return SampleValue::Valid;
 
     const Bsdf bsdf = hit->bsdf();
     const double uLobe = random.next();
     const Vec2d u = random.next2D();
     const std::optional<BsdfSample> sample = bsdf.sample(vertex.wi, uLobe, u, mode);
-    if (!sample || sample->weight == Rgb(0.0)) return;
+    if (!sample || sample->weight == Rgb(0.0)) return SampleValue::Valid;
     PathVertex& here = path.back();
     here.delta = sample->isDelta();
     const double reversePdf = here.delta ? 1.0 : bsdf.pdf(sample->wo, here.wi, reverseMode);
     path[path.size() - 2].pdfReverse = reverseDensity(reversePdf, here.delta, here, path[path.size() - 2]);
 
     beta *= sample->weight;
+    // As in the path tracer: a throughput that is not finite or negative ends the walk, which
+    // says so, where a silent end would look like absorbed light (sample_value.h).
+    if (const SampleValue value = classifyValue(beta); value != SampleValue::Valid) return value;
     if (hasAny(sample->lobe, LobeFlags::Transmission)) etaScale *= sample->eta * sample->eta;
     density = RayDensity{sample->pdf, false, here.delta};
     ray = spawnRay(here.point(), here.normal(), sample->wo);
@@ -89,7 +93,7 @@ void walk(const Scene& scene, Ray ray, Rgb beta, RayDensity density, TransportMo
       const Rgb scaled = mode == TransportMode::Radiance ? beta * etaScale : beta / startScale;
       const double q = std::max({scaled.x, scaled.y, scaled.z});
       if (q < 1.0) {
-        if (random.next() >= q) return;
+        if (random.next() >= q) return SampleValue::Valid;
         beta /= q;
       }
     }
@@ -105,8 +109,8 @@ double toAreaDensity(double pdfSolidAngle, const Vec3d& from, const Vec3d& to, c
   return pdfSolidAngle * std::abs(glm::dot(toNormal, d)) / (distance2 * std::sqrt(distance2));
 }
 
-void traceCameraSubpath(const Scene& scene, const Vec2d& film, SampleStream& random,
-                        const SubpathSettings& settings, std::vector<PathVertex>& out) {
+SampleValue traceCameraSubpath(const Scene& scene, const Vec2d& film, SampleStream& random,
+                               const SubpathSettings& settings, std::vector<PathVertex>& out) {
   out.clear();
   const PinholeCamera& camera = scene.camera();
   PathVertex eye;
@@ -116,14 +120,14 @@ void traceCameraSubpath(const Scene& scene, const Vec2d& film, SampleStream& ran
   out.push_back(eye);
   const Ray ray = camera.generateRay(film);
   const double pdf = camera.directionPdf(glm::dot(ray.direction, camera.forward()));
-  walk(scene, ray, Rgb(1.0), RayDensity{pdf}, TransportMode::Radiance, random, settings, out);
+  return walk(scene, ray, Rgb(1.0), RayDensity{pdf}, TransportMode::Radiance, random, settings, out);
 }
 
-void traceLightSubpath(const Scene& scene, const LightEmission& emission, SampleStream& random,
-                       const SubpathSettings& settings, std::vector<PathVertex>& out) {
+SampleValue traceLightSubpath(const Scene& scene, const LightEmission& emission, SampleStream& random,
+                              const SubpathSettings& settings, std::vector<PathVertex>& out) {
   out.clear();
   const std::optional<EmittedRay> emitted = emission.sample(random);
-  if (!emitted) return;
+  if (!emitted) return SampleValue::Valid;
   PathVertex light;
   light.kind = PathVertex::Kind::Light;
   light.light = emitted->light;
@@ -134,8 +138,8 @@ void traceLightSubpath(const Scene& scene, const LightEmission& emission, Sample
   light.deltaLight = emitted->deltaDirection;
   light.pdfForward = emitted->pdfLight;
   out.push_back(light);
-  walk(scene, emitted->ray, emitted->weight, RayDensity{emitted->pdfNext, emitted->atInfinity},
-       TransportMode::Importance, random, settings, out);
+  return walk(scene, emitted->ray, emitted->weight, RayDensity{emitted->pdfNext, emitted->atInfinity},
+              TransportMode::Importance, random, settings, out);
 }
 
 std::optional<CameraConnection> connectToCamera(const Scene& scene, const PathVertex& vertex,

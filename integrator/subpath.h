@@ -23,6 +23,7 @@
 
 #include "integrator/emission.h"
 #include "integrator/pixel_filter.h"
+#include "integrator/sample_value.h"
 #include "integrator/sampler.h"
 #include "integrator/scene.h"
 
@@ -63,16 +64,20 @@ struct SubpathSettings {
   int rouletteDepth;
 };
 
+// Both return Valid, or the kind of the throughput that was not finite or negative (a BSDF
+// sample's weight, sample_value.h) on which the walk ended: the vertices before it are in
+// `out`, and the caller drops and counts its sample (render.h), as the path tracer does.
+//
 // The camera subpath of one camera sample through film point `film`: the eye, then up to
 // maxVertices surface vertices; a ray that escapes adds a last vertex at infinity (kind
 // Surface, atInfinity). `out` is cleared first and reused (no allocation once it has grown).
-void traceCameraSubpath(const Scene& scene, const Vec2d& film, SampleStream& random,
-                        const SubpathSettings& settings, std::vector<PathVertex>& out);
+SampleValue traceCameraSubpath(const Scene& scene, const Vec2d& film, SampleStream& random,
+                               const SubpathSettings& settings, std::vector<PathVertex>& out);
 
 // The light subpath of one light path: the light's vertex, then up to maxVertices surface
 // vertices. Empty when no light sends anything.
-void traceLightSubpath(const Scene& scene, const LightEmission& emission, SampleStream& random,
-                       const SubpathSettings& settings, std::vector<PathVertex>& out);
+SampleValue traceLightSubpath(const Scene& scene, const LightEmission& emission, SampleStream& random,
+                              const SubpathSettings& settings, std::vector<PathVertex>& out);
 
 // A surface vertex of a light subpath seen by the eye (the strategies with t = 1): where on the
 // film and the value to add there, per light path, before any MIS weight:

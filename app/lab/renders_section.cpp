@@ -185,10 +185,12 @@ PreviewSceneFactory integratorPreviewScene() {
 namespace {
 
 // The material on the preview scene under the first map: preview.png and preview.exr, and its
-// entry for renders.json; an empty html when the renderer refused the material.
+// entry for renders.json; an empty html when the renderer refused the material. Its dropped
+// samples join the sphere renders' in the section's count and red box (render.h).
 struct PreviewRender {
   std::string html;
   json data;
+  RenderStatistics statistics;
 };
 
 PreviewRender previewRender(const LabMaterial& material, const LabSettings& settings,
@@ -222,7 +224,18 @@ PreviewRender previewRender(const LabMaterial& material, const LabSettings& sett
            {"exposure_stops", exposure},
            {"seconds", result.statistics.seconds},
            {"samples", result.statistics.samples},
-           {"non_finite_samples", result.statistics.nonFiniteSamples}}};
+           {"non_finite_samples", result.statistics.nonFiniteSamples},
+           {"negative_samples", result.statistics.negativeSamples},
+           {"dropped_samples", result.statistics.droppedSamples()}},
+          result.statistics};
+}
+
+// One line of the red box (droppedBox): what was rendered and how many of its samples were dropped.
+std::string droppedLine(const std::string& what, const RenderStatistics& statistics) {
+  return html::textElement("li", what + ": " + std::to_string(statistics.droppedSamples()) + " of " +
+                                     std::to_string(statistics.samples) + " samples (" +
+                                     std::to_string(statistics.nonFiniteSamples) + " not finite, " +
+                                     std::to_string(statistics.negativeSamples) + " negative)");
 }
 
 }  // namespace
@@ -289,11 +302,7 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
                          {"dropped_samples", result.statistics.droppedSamples()}});
       if (const uint64_t dropped = result.statistics.droppedSamples(); dropped > 0) {
         droppedSamples += dropped;
-        droppedLines += html::textElement(
-            "li", subject.label + " under " + environments[e].name + ": " + std::to_string(dropped) + " of " +
-                      std::to_string(result.statistics.samples) + " samples (" +
-                      std::to_string(result.statistics.nonFiniteSamples) + " not finite, " +
-                      std::to_string(result.statistics.negativeSamples) + " negative)");
+        droppedLines += droppedLine(subject.label + " under " + environments[e].name, result.statistics);
       }
       results[s].push_back({std::move(result), sphere});
     }
@@ -373,6 +382,10 @@ ReportSection rendersSection(const LabMaterial& material, const MaterialFits* fi
         previewRender(material, settings, environments.front(), materialDir, progress, previewOf);
     body += html::textElement("h4", "on the preview scene") +
             html::element("div", p.html, {{"class", "renders"}});
+    if (const uint64_t dropped = p.statistics.droppedSamples(); dropped > 0) {
+      droppedSamples += dropped;
+      droppedLines += droppedLine(material.name + " on the preview scene", p.statistics);
+    }
     preview = std::move(p.data);
   }
 

@@ -78,7 +78,7 @@ TEST_P(AdjointAgreement, PathLightAndBdptAgree) {
   const json& material = GetParam().material;
   const RenderAgreement comparison =
       compareEstimators([&] { return makeBsdf(material); }, renderAgreementSeed(GetParam().name));
-  EXPECT_EQ(comparison.nonFiniteSamples, 0u);
+  EXPECT_EQ(comparison.droppedSamples(), 0u);
   const ConvergenceSpeed& speed = comparison.speed;
   std::cout << "[ speed    ] " << GetParam().name << ": seconds to 1% relative error per pixel ("
             << speed.pixels << " pixels): path " << speed.path << ", light " << speed.light << ", bdpt "

@@ -168,6 +168,34 @@ TEST(LabRenders, DroppedSamplesAreCountedAndShownInARedBox) {
   EXPECT_EQ(sound.html.find("Samples dropped"), std::string::npos);
 }
 
+// The preview render's dropped samples are counted with the sphere renders': in its entry, in the
+// section's total (which fails the material, lab_command.cpp) and in the red box.
+TEST(LabRenders, DroppedSamplesOfThePreviewAreCountedAndShownInTheRedBox) {
+  const fs::path dir = freshDir("lab-renders-preview-dropped");
+  const PreviewSceneFactory brokenPreview = [](const json&, const Environment& environment, int width,
+                                               int height) {
+    return makePresetScene(ScenePreset::Preview, std::make_unique<NonFiniteLambertian>(), environment, width,
+                           height);
+  };
+  const ReportSection section = rendersSection(lambertian(0.5), nullptr, tinyRenders(), furnace(), dir, {},
+                                               acceptEverything, brokenPreview);
+  ASSERT_EQ(section.data["renders"].size(), 1u);
+  EXPECT_EQ(section.data["renders"][0]["dropped_samples"].get<uint64_t>(), 0u);
+  const json& preview = section.data["preview"];
+  ASSERT_TRUE(preview.is_object());
+  const uint64_t dropped = preview["dropped_samples"].get<uint64_t>();
+  // The sphere covers part of the preview: some of its samples, not all.
+  EXPECT_GT(dropped, 0u);
+  EXPECT_LT(dropped, preview["samples"].get<uint64_t>());
+  EXPECT_EQ(preview["non_finite_samples"].get<uint64_t>(), dropped);
+  EXPECT_EQ(preview["negative_samples"].get<uint64_t>(), 0u);
+  EXPECT_EQ(section.data["dropped_samples"].get<uint64_t>(), dropped);
+  cli_runner::expectMentions(section.html,
+                             {"class=\"failures\"", "Samples dropped",
+                              "on the preview scene: " + std::to_string(dropped) + " of " +
+                                  std::to_string(preview["samples"].get<uint64_t>()) + " samples"});
+}
+
 // The integrator's material sphere refuses what makeBsdf refuses, with the registry's message.
 TEST(LabRenders, TheIntegratorsSphereSceneRefusesWhatTheRegistryCannotMakeABsdfOf) {
   const json notABsdf{{"type", "no-such-model"}};

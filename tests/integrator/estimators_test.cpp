@@ -44,7 +44,7 @@ TEST(Estimators, OneAndTwoThreadsGiveTheSameBits) {
     EXPECT_EQ(one.albedo.data(), two.albedo.data()) << toString(kind);
     EXPECT_EQ(one.normal.data(), two.normal.data()) << toString(kind);
     EXPECT_EQ(one.statistics.vertices, two.statistics.vertices) << toString(kind);
-    EXPECT_EQ(one.statistics.nonFiniteSamples, 0u) << toString(kind);
+    EXPECT_EQ(one.statistics.droppedSamples(), 0u) << toString(kind);
     EXPECT_NE(one.color.data(), renderPreview(kind, 2, 6).color.data()) << toString(kind);
   }
 }
