@@ -17,10 +17,10 @@
 #include "app/exit_code.h"
 #include "app/lab/renders_section.h"
 #include "integrator/material_scene.h"
-#include "materials/bsdf/lambertian.h"
 #include "materials/registry/spec_validation.h"
 
 #include "cli_runner.h"
+#include "tests/validation/test_models.h"
 
 namespace scatterlab {
 namespace {
@@ -117,33 +117,12 @@ TEST(LabRenders, ADescriptionOfAnyTypeIsRenderedWhenTheRendererAcceptsIt) {
   EXPECT_TRUE(fs::exists(dir / "render_furnace_material.exr"));
 }
 
-// A Lambertian whose sampled weights are not finite: every sample of the sphere is dropped.
-class NonFiniteLambertian final : public BsdfModel {
- public:
-  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
-    return lambert_.eval(wi, wo, mode);
-  }
-  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
-    return lambert_.pdf(wi, wo, mode);
-  }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
-                                   TransportMode mode) const override {
-    std::optional<BsdfSample> s = lambert_.sample(wi, uLobe, u, mode);
-    if (s) s->weight = Rgb(std::numeric_limits<double>::quiet_NaN());
-    return s;
-  }
-  LobeFlags flags() const override { return lambert_.flags(); }
-
- private:
-  LambertianBsdf lambert_{Rgb(0.5)};
-};
-
 // Samples the film drops are counted per render and shown in a red box; the images hold none.
 TEST(LabRenders, DroppedSamplesAreCountedAndShownInARedBox) {
   const fs::path dir = freshDir("lab-renders-dropped");
   const SphereSceneFactory broken = [](const json&, const Environment& environment, int size) {
-    return makePresetScene(ScenePreset::MaterialSphere, std::make_unique<NonFiniteLambertian>(), environment,
-                           size, size);
+    return makePresetScene(ScenePreset::MaterialSphere,
+                           std::make_unique<testing::FaultyWeightLambertian>(1.0), environment, size, size);
   };
   const LabSettings settings = tinyRenders();
   const ReportSection section =
@@ -174,8 +153,8 @@ TEST(LabRenders, DroppedSamplesOfThePreviewAreCountedAndShownInTheRedBox) {
   const fs::path dir = freshDir("lab-renders-preview-dropped");
   const PreviewSceneFactory brokenPreview = [](const json&, const Environment& environment, int width,
                                                int height) {
-    return makePresetScene(ScenePreset::Preview, std::make_unique<NonFiniteLambertian>(), environment, width,
-                           height);
+    return makePresetScene(ScenePreset::Preview, std::make_unique<testing::FaultyWeightLambertian>(1.0),
+                           environment, width, height);
   };
   const ReportSection section = rendersSection(lambertian(0.5), nullptr, tinyRenders(), furnace(), dir, {},
                                                acceptEverything, brokenPreview);

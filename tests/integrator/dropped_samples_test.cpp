@@ -9,8 +9,8 @@
 #include <memory>
 #include <optional>
 
-#include "materials/bsdf/lambertian.h"
 #include "render_test_support.h"
+#include "tests/validation/test_models.h"
 
 namespace scatterlab {
 namespace {
@@ -20,39 +20,17 @@ using namespace render_test;
 const IntegratorKind SplattingAndPhotonEstimators[] = {IntegratorKind::Light, IntegratorKind::Bdpt,
                                                        IntegratorKind::Sppm};
 
-// A Lambertian whose sampled weight is broken on half of its samples (uLobe < 1/2), the way
-// the CLI's test hook breaks every BSDF (integrator/fault_injection.h): NaN, or -1 per channel.
-// eval and pdf stay the Lambertian's, so connections and next-event estimation stay sound and
-// only the walks through the sphere meet the fault.
-class FaultyLambertian final : public BsdfModel {
- public:
-  explicit FaultyLambertian(SampleValue fault) : fault_(fault) {}
-
-  Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
-    return lambert_.eval(wi, wo, mode);
-  }
-  double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
-    return lambert_.pdf(wi, wo, mode);
-  }
-  std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
-                                   TransportMode mode) const override {
-    std::optional<BsdfSample> s = lambert_.sample(wi, uLobe, u, mode);
-    if (s && uLobe < 0.5)
-      s->weight =
-          fault_ == SampleValue::NonFinite ? Rgb(std::numeric_limits<double>::quiet_NaN()) : Rgb(-1.0);
-    return s;
-  }
-  LobeFlags flags() const override { return lambert_.flags(); }
-
- private:
-  LambertianBsdf lambert_{Rgb(0.5)};
-  SampleValue fault_;
-};
+// A Lambertian whose sampled weight is broken on half of its samples, the way the CLI's test
+// hook breaks every BSDF (integrator/fault_injection.h): NaN, or -1 per channel.
+std::unique_ptr<BsdfModel> faultyLambertian(SampleValue fault) {
+  return std::make_unique<testing::FaultyWeightLambertian>(
+      0.5, fault == SampleValue::NonFinite ? Rgb(std::numeric_limits<double>::quiet_NaN()) : Rgb(-1.0));
+}
 
 // The faulty sphere on the checkered ground under a sky and the light: light paths reach the
 // sphere from both, and camera rays meet it directly.
 RenderResult renderFaulty(IntegratorKind kind, SampleValue fault) {
-  const Scene scene = makePresetScene(ScenePreset::Preview, std::make_unique<FaultyLambertian>(fault),
+  const Scene scene = makePresetScene(ScenePreset::Preview, faultyLambertian(fault),
                                       Environment::fromMap(smoothSkyMap(16)), 24, 18);
   RenderSettings settings = settingsWith(4, 3, kind != IntegratorKind::Sppm);
   settings.integratorKind = kind;

@@ -116,7 +116,7 @@ TEST(BsdfCheck, NonFiniteWeightsAreCountedAndFailTheirRow) {
   BsdfCheckOptions o = quickOptions();
   o.wiThetaDeg = {30};
   const CheckRow* row = nullptr;
-  const CheckReport broken = runBsdfChecks(testing::NonFiniteWeightLambertian(0.25), "nan", o);
+  const CheckReport broken = runBsdfChecks(testing::FaultyWeightLambertian(0.25), "nan", o);
   ASSERT_NE(row = broken.find("invalid values", 30), nullptr);
   EXPECT_FALSE(row->passed);
   EXPECT_NEAR(row->statistic, 0.25 * double(o.samples), 5.0 * std::sqrt(0.25 * 0.75 * double(o.samples)));

@@ -62,22 +62,27 @@ class WrongWeightLambertian final : public BsdfModel {
   LambertianBsdf base_;
 };
 
-// A Lambertian whose sampled weights are not finite (NaN) for samples with uLobe < fraction.
-class NonFiniteWeightLambertian final : public BsdfModel {
+// A Lambertian (albedo 0.5) whose sampled weight is `faultyWeight` for samples with
+// uLobe < fraction: NaN by default, or a negative value. eval and pdf stay the Lambertian's, so
+// a renderer's connections and next-event estimation stay sound and only sampling meets the fault.
+class FaultyWeightLambertian final : public BsdfModel {
  public:
-  explicit NonFiniteWeightLambertian(double fraction) : fraction_(fraction) {}
+  explicit FaultyWeightLambertian(double fraction,
+                                  const Rgb& faultyWeight = Rgb(std::numeric_limits<double>::quiet_NaN()))
+      : fraction_(fraction), faultyWeight_(faultyWeight) {}
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.eval(wi, wo); }
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const override { return base_.pdf(wi, wo); }
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                    TransportMode) const override {
     auto s = base_.sample(wi, uLobe, u);
-    if (s && uLobe < fraction_) s->weight = Rgb(std::numeric_limits<double>::quiet_NaN());
+    if (s && uLobe < fraction_) s->weight = faultyWeight_;
     return s;
   }
   LobeFlags flags() const override { return base_.flags(); }
 
  private:
   double fraction_;
+  Rgb faultyWeight_;
   LambertianBsdf base_{Rgb(0.5)};
 };
 
