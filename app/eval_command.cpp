@@ -15,6 +15,7 @@
 #include "app/exit_code.h"
 #include "app/material_argument.h"
 #include "materials/bsdf/direction_pairs.h"
+#include "materials/bsdf/sample_queries.h"
 #include "materials/bssrdf/subsurface_registry.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/parameter_spec.h"
@@ -58,10 +59,9 @@ CLI::Validator angleValidator() {
       "");
 }
 
-std::vector<DirectionPair> readDirectionsFile(const std::string& path) {
-  const std::string source = "--directions file \"" + path + "\": ";
-  const std::string allowed =
-      "; allowed: a readable JSON file holding [{\"wi\": [x, y, z], \"wo\": [x, y, z]}, ...]";
+// The JSON document of an option's file; InputError naming the option, the file and `allowed`.
+json readJsonFile(const std::string& option, const std::string& path, const std::string& allowed) {
+  const std::string source = option + " file \"" + path + "\": ";
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
   if (!std::filesystem::exists(status)) throw InputError(source + "not found" + allowed);
@@ -70,9 +70,8 @@ std::vector<DirectionPair> readDirectionsFile(const std::string& path) {
   std::ostringstream text;
   if (file) text << file.rdbuf();
   if (!file.is_open() || file.bad()) throw InputError(source + "not readable" + allowed);
-  json parsed;
   try {
-    parsed = json::parse(text.str());
+    return json::parse(text.str());
   } catch (const json::exception& parseError) {  // a syntax error, or a number beyond a double's range
     std::string detail = parseError.what();
     if (const auto bracket = detail.find("] ");
@@ -80,18 +79,47 @@ std::vector<DirectionPair> readDirectionsFile(const std::string& path) {
       detail = detail.substr(bracket + 2);
     throw InputError(source + "not valid JSON (" + detail + ")" + allowed);
   }
+}
+
+std::vector<DirectionPair> readDirectionsFile(const std::string& path) {
+  const std::string allowed =
+      "; allowed: a readable JSON file holding [{\"wi\": [x, y, z], \"wo\": [x, y, z]}, ...]";
+  const json parsed = readJsonFile("--directions", path, allowed);
   try {
     return directionPairsFromJson(parsed);
   } catch (const DirectionError& directionError) {
-    throw InputError(source + directionError.what());
+    throw InputError("--directions file \"" + path + "\": " + directionError.what());
   }
 }
 
-std::vector<DirectionPair> pairsOf(const EvalCommandOptions& options) {
-  const std::string allowed = "; allowed: --directions FILE, or --wi THETA,PHI with --wo THETA,PHI";
+std::vector<SampleQuery> readSamplesFile(const std::string& path) {
+  const std::string allowed =
+      "; allowed: a readable JSON file holding [{\"wi\": [x, y, z], \"u_lobe\": a, \"u\": [b, c]}, ...]";
+  const json parsed = readJsonFile("--samples", path, allowed);
+  try {
+    return sampleQueriesFromJson(parsed);
+  } catch (const DirectionError& queryError) {
+    throw InputError("--samples file \"" + path + "\": " + queryError.what());
+  }
+}
+
+const char* const DirectionSourcesAllowed =
+    "; allowed: --directions FILE, --samples FILE, or --wi THETA,PHI with --wo THETA,PHI";
+
+// One source of queries, checked before any file is read.
+void checkOneDirectionSource(const EvalCommandOptions& options) {
   const bool angles = !options.wi.empty() || !options.wo.empty();
+  if (!options.samplesFile.empty() && (angles || !options.directionsFile.empty()))
+    throw InputError("eval: --samples and " + std::string(angles ? "--wi/--wo" : "--directions") +
+                     " both given; allowed: --samples FILE alone, --directions FILE, or --wi THETA,PHI with "
+                     "--wo THETA,PHI");
   if (!options.directionsFile.empty() && angles)
-    throw InputError("eval: --directions and --wi/--wo both given" + allowed);
+    throw InputError(std::string("eval: --directions and --wi/--wo both given") + DirectionSourcesAllowed);
+}
+
+std::vector<DirectionPair> pairsOf(const EvalCommandOptions& options) {
+  const std::string allowed = DirectionSourcesAllowed;
+  const bool angles = !options.wi.empty() || !options.wo.empty();
   if (!options.directionsFile.empty()) return readDirectionsFile(options.directionsFile);
   if (options.wi.empty() || options.wo.empty())
     throw InputError(
@@ -119,6 +147,29 @@ void printTable(const json& material, std::span<const DirectionPair> pairs,
   }
 }
 
+void printSamples(const json& material, const json& samples) {
+  std::cout << "material: " << material.dump() << "\n";
+  std::cout << "# wi_x wi_y wi_z  u_lobe u_0 u_1  wo_x wo_y wo_z  weight_r weight_g weight_b  pdf  delta "
+               "(an invalid sample: \"failed\")\n";
+  const auto v = [](const json& a) {
+    return formatVector(Vec3d(a[0].get<double>(), a[1].get<double>(), a[2].get<double>()));
+  };
+  for (const json& s : samples) {
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, "%.9g %.9g %.9g", s["u_lobe"].get<double>(),
+                  s["u"][0].get<double>(), s["u"][1].get<double>());
+    std::cout << v(s["wi"]) << "  " << numbers << "  ";
+    if (!s["valid"].get<bool>()) {
+      std::cout << "failed\n";
+      continue;
+    }
+    char pdf[32];
+    std::snprintf(pdf, sizeof pdf, "%.9g", s["pdf"].get<double>());
+    std::cout << v(s["wo"]) << "  " << v(s["weight"]) << "  " << pdf << "  "
+              << (s["delta"].get<bool>() ? "1" : "0") << "\n";
+  }
+}
+
 }  // namespace
 
 CLI::App* addEvalCommand(CLI::App& app, EvalCommandOptions& options) {
@@ -136,6 +187,12 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCommandOptions& options) {
       ->add_option("--directions", options.directionsFile,
                    "JSON file: an array of {\"wi\": [x, y, z], \"wo\": [x, y, z]}, unit vectors (to 1e-5)")
       ->type_name("FILE");
+  command
+      ->add_option(
+          "--samples", options.samplesFile,
+          "JSON file: an array of {\"wi\": [x, y, z], \"u_lobe\": a, \"u\": [b, c]}, a, b, c in [0, 1): "
+          "print what the sampler returns for them (wo, weight = f |cos wo| / pdf, pdf, valid, delta)")
+      ->type_name("FILE");
   command->add_option("--wi", options.wi, "Incident direction: theta,phi in degrees (theta from the normal)")
       ->type_name("THETA,PHI")
       ->check(angleValidator());
@@ -151,7 +208,10 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCommandOptions& options) {
 }
 
 int runEvalCommand(const EvalCommandOptions& options) {
-  const std::vector<DirectionPair> pairs = pairsOf(options);
+  checkOneDirectionSource(options);
+  const std::vector<SampleQuery> queries =
+      options.samplesFile.empty() ? std::vector<SampleQuery>{} : readSamplesFile(options.samplesFile);
+  const std::vector<DirectionPair> pairs = queries.empty() ? pairsOf(options) : std::vector<DirectionPair>{};
   const json material = materialFromArgument(options.material);
   json completed;
   std::unique_ptr<BsdfModel> model;
@@ -161,6 +221,14 @@ int runEvalCommand(const EvalCommandOptions& options) {
   } catch (const MaterialError& error) {
     if (isInlineMaterial(options.material)) throw;
     throw MaterialError("material \"" + options.material + "\": " + error.what());
+  }
+  if (!queries.empty()) {
+    const json samples = sampleQueryValuesJson(*model, queries);
+    if (options.json)
+      std::cout << json{{"material", completed}, {"samples", samples}}.dump(2) << "\n";
+    else
+      printSamples(completed, samples);
+    return static_cast<int>(ExitCode::Success);
   }
   const std::vector<PairValue> values = evaluatePairs(*model, pairs);
   if (options.json)

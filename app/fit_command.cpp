@@ -77,7 +77,7 @@ LoadedData loadRgl(const std::string& data) {
 // A material tabulated in the MERL layout (no perturbation), a MERL file, or an RGL file (told
 // apart by content, whatever the name: materials/measured/measured_file.h); its usable cells.
 // `claimOutputs` runs once the data is known to be valid, before the tabulation.
-LoadedData loadData(const std::string& data, int threads, ProgressLine& progress,
+LoadedData loadData(const std::string& data, int threads, const ProgressCallback& tabulating,
                     const std::function<void()>& claimOutputs) {
   const std::optional<MeasuredFormat> format = isInlineMaterial(data) ? std::nullopt : measuredFormatOf(data);
   if (format == MeasuredFormat::Rgl) {
@@ -100,7 +100,7 @@ LoadedData loadData(const std::string& data, int threads, ProgressLine& progress
     loaded.kind = "material";
     claimOutputs();
     const MeasurementSynthesizer synthesizer({model.get()}, MeasurementPerturbation{});
-    table = synthesizeTable(synthesizer, threads, progress.callback("tabulating"));
+    table = synthesizeTable(synthesizer, threads, tabulating);
   } else {
     try {
       table = readMerl(data);
@@ -292,73 +292,115 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options) {
   return command;
 }
 
-int runFitCommand(const FitCommandOptions& options) {
-  // Every input is checked before the data is read or anything is fitted.
+namespace {
+
+// Everything one fit produced, for the report (text or JSON) and the Python package.
+struct FitRun {
   std::vector<json> components;
-  try {
-    components = parseModelSpec(options.model, options.lobes);
-  } catch (const MaterialError& error) {
-    throw MaterialError(std::string("--model: ") + error.what());
-  }
   std::unique_ptr<FitModel> model;
+  FitOptions fitOptions;
+  LoadedData data;
+  FitResult result;
+  WrittenMaterial written;
+  FitVerdict verdict;
+};
+
+// Checks every input before the data is read or anything is fitted, then fits. With `outputs`,
+// --out is checked against the data and claimed before the tabulation or fit (staged_outputs.h);
+// without, nothing is claimed or written.
+FitRun fitData(const FitCommandOptions& options, std::optional<StagedOutputs>* outputs, bool showProgress) {
+  FitRun run;
   try {
-    model = std::make_unique<FitModel>(components, options.perChannel);
+    run.components = parseModelSpec(options.model, options.lobes);
   } catch (const MaterialError& error) {
     throw MaterialError(std::string("--model: ") + error.what());
   }
-  FitOptions fitOptions = fitOptionsOf(options);
-  if (fitOptions.robust == RobustLoss::None && options.robustScale)
+  try {
+    run.model = std::make_unique<FitModel>(run.components, options.perChannel);
+  } catch (const MaterialError& error) {
+    throw MaterialError(std::string("--model: ") + error.what());
+  }
+  run.fitOptions = fitOptionsOf(options);
+  if (run.fitOptions.robust == RobustLoss::None && options.robustScale)
     throw InputError("--robust-scale: only applies with --robust huber, cauchy or soft-l1");
 
-  // The output is checked against the data now, and claimed before the tabulation or fit.
   std::vector<InputPath> inputs;
   if (isMaterialData(options.data))
     addMaterialInputs(inputs, options.data, loadMaterialArgument(options.data));
   else
     inputs.push_back({"data file", options.data});
-  StagedOutputs outputs(inputs);
-  if (!options.out.empty()) outputs.addFile("--out", options.out, "fit.json");
+  if (outputs) {
+    outputs->emplace(inputs);
+    if (!options.out.empty()) (*outputs)->addFile("--out", options.out, "fit.json");
+  }
   // A plugin model without a fit kernel is differentiated numerically: say so before the work.
-  for (const std::string& note : model->derivativeNotes()) std::cerr << "scatterlab: note: " << note << "\n";
+  for (const std::string& note : run.model->derivativeNotes())
+    std::cerr << "scatterlab: note: " << note << "\n";
 
   ProgressLine progress;
-  const LoadedData data = loadData(options.data, options.threads, progress, [&] { outputs.prepare(); });
-  const BrdfSamples samples = stratifiedSubset(data.samples, options.samples, options.seed);
-  fitOptions.progress = progress.callback("fit");
-  const FitResult result = fitBrdf(*model, samples, fitOptions);
+  ProgressLine* shown = showProgress ? &progress : nullptr;
+  const auto callback = [&](const char* stage) {
+    return shown ? shown->callback(stage) : ProgressCallback();
+  };
+  run.data = loadData(options.data, options.threads, callback("tabulating"), [&] {
+    if (outputs) (*outputs)->prepare();
+  });
+  const BrdfSamples samples = stratifiedSubset(run.data.samples, options.samples, options.seed);
+  run.fitOptions.progress = callback("fit");
+  run.result = fitBrdf(*run.model, samples, run.fitOptions);
   progress.clear();
 
-  const WrittenMaterial written = writeMaterial(model->fittedParts(result.x.data()));
-  const FitVerdict verdict = judgeFit(result, written, options.maxRelativeError);
+  run.written = writeMaterial(run.model->fittedParts(run.result.x.data()));
+  run.verdict = judgeFit(run.result, run.written, options.maxRelativeError);
+  return run;
+}
+
+json reportJson(const FitCommandOptions& options, const FitRun& run, const std::string& writtenPath) {
+  const LoadedData& data = run.data;
+  return {{"data",
+           {{"source", data.label},
+            {"kind", data.kind},
+            {"usable_cells", data.counts.usable},
+            {"missing_cells", data.counts.missing},
+            {"unreachable_cells", data.counts.unreachable}}},
+          {"model", options.model},
+          {"components", run.components},
+          {"lobes", options.lobes},
+          {"per_channel", options.perChannel},
+          {"derivative_notes", run.model->derivativeNotes()},
+          {"fit", toJson(run.result, *run.model, run.fitOptions)},
+          {"material", run.written.material ? *run.written.material : json()},
+          {"material_problem", run.written.problem},
+          {"verdict", run.verdict.good ? "good" : "poor"},
+          {"problems", run.verdict.problems},
+          {"written", writtenPath.empty() ? json() : json(writtenPath)}};
+}
+
+}  // namespace
+
+FitReport fitReport(const FitCommandOptions& options, bool progress) {
+  const FitRun run = fitData(options, nullptr, progress);
+  FitReport report{reportJson(options, run, ""), {}, run.verdict.good};
+  const Eigen::MatrixXd& covariance = run.result.covariance;
+  for (Eigen::Index i = 0; i < covariance.rows(); ++i)
+    for (Eigen::Index j = 0; j < covariance.cols(); ++j) report.covariance.push_back(covariance(i, j));
+  return report;
+}
+
+int runFitCommand(const FitCommandOptions& options) {
+  std::optional<StagedOutputs> outputs;
+  const FitRun run = fitData(options, &outputs, true);
   std::string writtenPath;
-  if (verdict.good && !options.out.empty()) {
-    writeTextFileAtomically(outputs.staged(options.out), written.material->dump(2) + "\n");
-    outputs.commit();
+  if (run.verdict.good && !options.out.empty()) {
+    writeTextFileAtomically(outputs->staged(options.out), run.written.material->dump(2) + "\n");
+    outputs->commit();
     writtenPath = options.out;
   }
-  if (options.json) {
-    json report{{"data",
-                 {{"source", data.label},
-                  {"kind", data.kind},
-                  {"usable_cells", data.counts.usable},
-                  {"missing_cells", data.counts.missing},
-                  {"unreachable_cells", data.counts.unreachable}}},
-                {"model", options.model},
-                {"components", components},
-                {"lobes", options.lobes},
-                {"per_channel", options.perChannel},
-                {"derivative_notes", model->derivativeNotes()},
-                {"fit", toJson(result, *model, fitOptions)},
-                {"material", written.material ? *written.material : json()},
-                {"material_problem", written.problem},
-                {"verdict", verdict.good ? "good" : "poor"},
-                {"problems", verdict.problems},
-                {"written", writtenPath.empty() ? json() : json(writtenPath)}};
-    std::cout << jsonText(report) << "\n";
-  } else {
-    printReport(options, data, result, written, verdict, writtenPath);
-  }
-  return static_cast<int>(verdict.good ? ExitCode::Success : ExitCode::CheckFailed);
+  if (options.json)
+    std::cout << jsonText(reportJson(options, run, writtenPath)) << "\n";
+  else
+    printReport(options, run.data, run.result, run.written, run.verdict, writtenPath);
+  return static_cast<int>(run.verdict.good ? ExitCode::Success : ExitCode::CheckFailed);
 }
 
 }  // namespace scatterlab

@@ -12,8 +12,10 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 namespace scatterlab {
 
@@ -41,5 +43,17 @@ CLI::App* addFitCommand(CLI::App& app, FitCommandOptions& options);
 // Validates every input before any work (bad input throws MaterialError or InputError and
 // writes nothing); returns 0 or 1 (header comment).
 int runFitCommand(const FitCommandOptions& options);
+
+// One fit as the command runs it, validated the same way, printing nothing but the progress line
+// (with `progress`) and writing nothing (--out and --json are not used): the report --json prints,
+// with "written" null, and the parameters' covariance, row-major p x p in the order of
+// report["fit"]["parameters"] (empty when not available: fitting/brdf_fit.h). The Python
+// package's sl.fit (docs/python.md).
+struct FitReport {
+  nlohmann::json report;
+  std::vector<double> covariance;
+  bool good = false;  // the verdict: the command's exit code 0
+};
+FitReport fitReport(const FitCommandOptions& options, bool progress);
 
 }  // namespace scatterlab

@@ -286,7 +286,8 @@ json comparisonJson(const LoadedMaterial& loaded, const ProfileComparison& compa
           {"models", std::move(models)}};
 }
 
-int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& loaded) {
+ProfileComparison compareWithWalk(const ProfileCommandOptions& options, const LoadedMaterial& loaded,
+                                  bool showProgress) {
   ProfileComparisonOptions compare;
   compare.paths = options.paths;
   compare.seed = options.seed;
@@ -300,9 +301,14 @@ int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& lo
   announceWork(
       estimateWalks("profile --compare: 3 walks of " + std::to_string(options.paths) + " paths", channels));
   ProgressLine progress;
-  const ProfileComparison comparison =
-      compareProfilesWithWalk(loaded.material.medium, compare, progress.walkCallback("walk"));
+  ProfileComparison comparison = compareProfilesWithWalk(
+      loaded.material.medium, compare, showProgress ? progress.walkCallback("walk") : WalkProgress());
   progress.clear();
+  return comparison;
+}
+
+int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& loaded) {
+  const ProfileComparison comparison = compareWithWalk(options, loaded, true);
   if (options.json)
     std::cout << jsonText(comparisonJson(loaded, comparison)) << "\n";
   else
@@ -310,6 +316,63 @@ int runComparison(const ProfileCommandOptions& options, const LoadedMaterial& lo
   std::vector<const HalfSpaceWalkResult*> walks;
   for (const HalfSpaceWalkResult& w : comparison.walks) walks.push_back(&w);
   return nonFiniteWalkStatus(walks);
+}
+
+// The profile's annuli and, with --reference walk, the walk per channel.
+struct ProfileRun {
+  std::vector<double> edges;
+  std::vector<std::vector<double>> means;
+  std::vector<std::optional<ChannelWalk>> walks = std::vector<std::optional<ChannelWalk>>(3);
+};
+
+ProfileRun tabulateProfile(const ProfileCommandOptions& options, const LoadedMaterial& loaded,
+                           bool showProgress) {
+  ProfileRun run;
+  const RadialProfile& profile = *loaded.material.profile;
+  run.edges = radiusEdges(options, profile);
+  for (int c = 0; c < 3; ++c) run.means.push_back(annulusMeans(profile, c, run.edges));
+  if (options.reference == "walk") {
+    std::vector<HalfSpaceWalkSettings> channels;
+    for (int c = 0; c < 3; ++c)
+      channels.push_back(walkSettings(options, loaded.material.medium, c, run.edges));
+    announceWork(estimateWalks("profile: 3 walks of " + std::to_string(options.paths) + " paths", channels));
+    ProgressLine progress;
+    for (int c = 0; c < 3; ++c) {
+      const HalfSpaceWalkSettings& settings = channels[size_t(c)];
+      ChannelWalk walk{simulateHalfSpace(settings, showProgress ? progress.walkCallback(std::string("walk ") +
+                                                                                        ChannelNames[c])
+                                                                : WalkProgress()),
+                       std::nullopt};
+      if (settings.eta == 1.0 && settings.g == 0.0 && settings.incidentCosTheta == 1.0)
+        walk.exactTotal = ChandrasekharH(settings.albedo).directionalAlbedo(1.0);
+      run.walks[size_t(c)] = std::move(walk);
+    }
+  }
+  return run;
+}
+
+json profileJson(const LoadedMaterial& loaded, const ProfileRun& run) {
+  const RadialProfile& profile = *loaded.material.profile;
+  json channels = json::array();
+  for (int c = 0; c < 3; ++c) {
+    json channel{{"channel", ChannelNames[c]},
+                 {"total_reflectance", profile.totalReflectance()[c]},
+                 {"profile", run.means[size_t(c)]}};
+    if (run.walks[size_t(c)]) channel["walk"] = walkJson(*run.walks[size_t(c)]);
+    channels.push_back(std::move(channel));
+  }
+  const ScatteringMedium& m = loaded.material.medium;
+  return {{"material", loaded.completed},
+          {"label", loaded.label},
+          {"profile_model", profile.name()},
+          {"medium",
+           {{"sigma_s", {m.sigmaS.x, m.sigmaS.y, m.sigmaS.z}},
+            {"sigma_a", {m.sigmaA.x, m.sigmaA.y, m.sigmaA.z}},
+            {"g", m.g},
+            {"eta", m.eta}}},
+          {"units", "lengths mm, coefficients mm^-1, R mm^-2 (averaged over each annulus)"},
+          {"radius_edges", run.edges},
+          {"channels", std::move(channels)}};
 }
 
 }  // namespace
@@ -368,60 +431,25 @@ CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options) {
   return command;
 }
 
+json profileReport(const ProfileCommandOptions& options, bool progress) {
+  checkWalkOptions(options);
+  const LoadedMaterial loaded = loadSubsurface(options.material);
+  if (options.compare) return comparisonJson(loaded, compareWithWalk(options, loaded, progress));
+  return profileJson(loaded, tabulateProfile(options, loaded, progress));
+}
+
 int runProfileCommand(const ProfileCommandOptions& options) {
   checkWalkOptions(options);
   const LoadedMaterial loaded = loadSubsurface(options.material);
   if (options.compare) return runComparison(options, loaded);
-  const RadialProfile& profile = *loaded.material.profile;
-  const std::vector<double> edges = radiusEdges(options, profile);
-
-  std::vector<std::vector<double>> means;
-  for (int c = 0; c < 3; ++c) means.push_back(annulusMeans(profile, c, edges));
-  std::vector<std::optional<ChannelWalk>> walks(3);
-  if (options.reference == "walk") {
-    std::vector<HalfSpaceWalkSettings> channels;
-    for (int c = 0; c < 3; ++c) channels.push_back(walkSettings(options, loaded.material.medium, c, edges));
-    announceWork(estimateWalks("profile: 3 walks of " + std::to_string(options.paths) + " paths", channels));
-    ProgressLine progress;
-    for (int c = 0; c < 3; ++c) {
-      const HalfSpaceWalkSettings& settings = channels[size_t(c)];
-      ChannelWalk walk{
-          simulateHalfSpace(settings, progress.walkCallback(std::string("walk ") + ChannelNames[c])),
-          std::nullopt};
-      if (settings.eta == 1.0 && settings.g == 0.0 && settings.incidentCosTheta == 1.0)
-        walk.exactTotal = ChandrasekharH(settings.albedo).directionalAlbedo(1.0);
-      walks[size_t(c)] = std::move(walk);
-    }
-  }
-
+  const ProfileRun run = tabulateProfile(options, loaded, true);
   std::vector<const HalfSpaceWalkResult*> walkResults;
-  for (const std::optional<ChannelWalk>& walk : walks)
+  for (const std::optional<ChannelWalk>& walk : run.walks)
     if (walk) walkResults.push_back(&walk->result);
-  if (!options.json) {
-    printText(loaded, edges, means, walks);
-    return nonFiniteWalkStatus(walkResults);
-  }
-  json channels = json::array();
-  for (int c = 0; c < 3; ++c) {
-    json channel{{"channel", ChannelNames[c]},
-                 {"total_reflectance", profile.totalReflectance()[c]},
-                 {"profile", means[size_t(c)]}};
-    if (walks[size_t(c)]) channel["walk"] = walkJson(*walks[size_t(c)]);
-    channels.push_back(std::move(channel));
-  }
-  const ScatteringMedium& m = loaded.material.medium;
-  const json document{{"material", loaded.completed},
-                      {"label", loaded.label},
-                      {"profile_model", profile.name()},
-                      {"medium",
-                       {{"sigma_s", {m.sigmaS.x, m.sigmaS.y, m.sigmaS.z}},
-                        {"sigma_a", {m.sigmaA.x, m.sigmaA.y, m.sigmaA.z}},
-                        {"g", m.g},
-                        {"eta", m.eta}}},
-                      {"units", "lengths mm, coefficients mm^-1, R mm^-2 (averaged over each annulus)"},
-                      {"radius_edges", edges},
-                      {"channels", std::move(channels)}};
-  std::cout << jsonText(document) << "\n";
+  if (options.json)
+    std::cout << jsonText(profileJson(loaded, run)) << "\n";
+  else
+    printText(loaded, run.edges, run.means, run.walks);
   return nonFiniteWalkStatus(walkResults);
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 namespace scatterlab {
 
@@ -32,5 +33,11 @@ CLI::App* addProfileCommand(CLI::App& app, ProfileCommandOptions& options);
 
 // Validates everything before any work; bad input throws MaterialError or InputError.
 int runProfileCommand(const ProfileCommandOptions& options);
+
+// The document --json prints (with --compare, the comparison's), validated and computed as the
+// command does, printing nothing but the progress line (with `progress`). Walk paths that stopped
+// being finite are counted in it ("non_finite_paths"), not reported. The Python package's
+// sl.profile (docs/python.md).
+nlohmann::json profileReport(const ProfileCommandOptions& options, bool progress);
 
 }  // namespace scatterlab

@@ -418,14 +418,34 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options) {
   return command;
 }
 
-int runRenderCommand(const RenderCommandOptions& options) {
-  // ---- Every input first: nothing is rendered or written unless all of it is valid.
+namespace {
+
+// Every input of a run, validated (all but --out), ready to render.
+struct RenderPlan {
+  Resolution resolution;
+  ScenePreset preset;
+  IntegratorKind integrator;
+  bool gallery = false;
+  int64_t pixels = 0;
+  std::vector<InputPath> inputs;
+  std::vector<MaterialToRender> materials;
+  json environment;  // its description
+  PresetLighting lighting;
+  SubsurfaceMode subsurfaceMode;
+  RenderSettings settings;
+};
+
+// Every input first: nothing is rendered or written unless all of it is valid.
+RenderPlan planRender(const RenderCommandOptions& options) {
+  RenderPlan plan;
   const auto resolution = parseResolution(options.resolution);
   if (!resolution)
     throw InputError("--res: " + inQuotes(options.resolution) +
                      " is not valid; allowed: " + ResolutionAllowed);
-  const ScenePreset preset = *findScenePreset(options.scene);
-  const IntegratorKind integrator = *findIntegrator(options.integrator);
+  plan.resolution = *resolution;
+  plan.preset = *findScenePreset(options.scene);
+  plan.integrator = *findIntegrator(options.integrator);
+  const IntegratorKind integrator = plan.integrator;
   if (integrator != IntegratorKind::Path && !options.estimator.empty())
     throw InputError("--estimator: chooses the path tracer's direct light; allowed: with --integrator path");
   if (integrator != IntegratorKind::Sppm && (options.photons > 0 || options.sppmRadius > 0))
@@ -435,41 +455,37 @@ int runRenderCommand(const RenderCommandOptions& options) {
     throw InputError(
         "--layers: \"variance\": sppm has no variance layer (it is consistent, not unbiased: its "
         "error is no sample variance); allowed: albedo, normal");
-  const bool gallery = options.materials.size() > 1;
+  plan.gallery = options.materials.size() > 1;
   if (!options.labels.empty() && options.labels.size() != options.materials.size())
     throw InputError("--label: " + std::to_string(options.labels.size()) + " labels for " +
                      std::to_string(options.materials.size()) +
                      " materials; allowed: one label per material");
-  if (gallery && !options.layers.empty())
+  if (plan.gallery && !options.layers.empty())
     throw InputError("--layers: only with a single material; a gallery writes the colour sheet alone");
   // A gallery renders every sphere at --res: all of them count against the pixel limit.
-  const int64_t pixels = int64_t(resolution->width) * resolution->height;
-  if (pixels * int64_t(options.materials.size()) > MaxImagePixels)
+  plan.pixels = int64_t(resolution->width) * resolution->height;
+  if (plan.pixels * int64_t(options.materials.size()) > MaxImagePixels)
     throw InputError("--res: " + std::to_string(options.materials.size()) + " materials x " +
                      std::to_string(resolution->width) + "x" + std::to_string(resolution->height) + " = " +
-                     std::to_string(pixels * int64_t(options.materials.size())) +
+                     std::to_string(plan.pixels * int64_t(options.materials.size())) +
                      " pixels; allowed: at most " + std::to_string(MaxImagePixels) +
                      " pixels in all (a gallery renders each material at --res)");
-  std::vector<InputPath> inputs;
-  std::vector<MaterialToRender> materials;
   for (size_t i = 0; i < options.materials.size(); ++i) {
-    materials.push_back(loadMaterial(options.materials[i], inputs));
-    if (!options.labels.empty()) materials.back().label = options.labels[i];
-    if (integrator != IntegratorKind::Path && materials.back().material.subsurface)
+    plan.materials.push_back(loadMaterial(options.materials[i], plan.inputs));
+    if (!options.labels.empty()) plan.materials.back().label = options.labels[i];
+    if (integrator != IntegratorKind::Path && plan.materials.back().material.subsurface)
       throw InputError("material " + inQuotes(options.materials[i]) +
                        ": a subsurface material (a BSSRDF), which --integrator " + options.integrator +
                        " does not render; allowed: --integrator path, or a BSDF");
   }
-  if (const std::string env = environmentChoice(options, preset); env != "white" && env != "none")
-    inputs.push_back({"environment map (--env)", env});
-  LoadedEnvironment loaded = loadEnvironment(options, preset);
-  const PresetLighting lighting = lightingOf(options, preset, std::move(loaded.environment));
-  StagedOutputs outputs(inputs);
-  const OutputPaths paths = addOutputs(outputs, options.out);
+  if (const std::string env = environmentChoice(options, plan.preset); env != "white" && env != "none")
+    plan.inputs.push_back({"environment map (--env)", env});
+  LoadedEnvironment loaded = loadEnvironment(options, plan.preset);
+  plan.environment = loaded.description;
+  plan.lighting = lightingOf(options, plan.preset, std::move(loaded.environment));
+  plan.subsurfaceMode = *findSubsurfaceMode(options.subsurface);
 
-  const SubsurfaceMode subsurfaceMode = *findSubsurfaceMode(options.subsurface);
-
-  RenderSettings settings;
+  RenderSettings& settings = plan.settings;
   settings.integratorKind = integrator;
   if (options.photons > 0) settings.sppm.photonsPerIteration = options.photons;
   if (options.sppmRadius > 0) settings.sppm.initialRadiusPixels = options.sppmRadius;
@@ -484,115 +500,96 @@ int runRenderCommand(const RenderCommandOptions& options) {
     settings.normalLayer |= layer == "normal";
     settings.varianceLayer |= layer == "variance";
   }
+  return plan;
+}
 
-  // ---- Claim the outputs (nothing is written before this point: an unwritable one is bad
-  // input now, not after the work), then announce long work.
-  outputs.prepare();
-  const double totalSamples = double(pixels) * double(options.spp) * double(materials.size());
-  constexpr double PilotAboveSamples = 5e7;  // ~10 s at a few million samples per second
-  if (totalSamples > PilotAboveSamples)
-    announceWork({"render: " + std::to_string(materials.size()) + " x " + std::to_string(resolution->width) +
-                      "x" + std::to_string(resolution->height) + " px x " + std::to_string(options.spp) +
-                      " spp",
-                  estimateRenderSeconds(preset, materials, subsurfaceMode, lighting, *resolution, settings),
-                  imageBytes(pixels, materials.size(), int(options.layers.size()), gallery)});
-
-  // ---- Render.
+struct RenderRuns {
   json runs = json::array();
   // Samples the film dropped (not finite, or negative: render.h); any fails the command.
   uint64_t droppedSamples = 0;
   std::string droppedMessages;  // printed once the progress line is gone
   std::vector<RenderResult> results;
-  {
-    ProgressLine progress;
-    for (size_t i = 0; i < materials.size(); ++i) {
-      MaterialToRender& material = materials[i];
-      const Scene scene = makeMaterialScene(preset, std::move(material.material), subsurfaceMode, lighting,
-                                            resolution->width, resolution->height);
-      const std::string step =
-          gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(materials.size()) + "] " : "";
-      const ProgressCallback report = progress.callback("render " + step + material.label);
-      RenderResult result = render(scene, settings, [&](double fraction) {
-        if (report) report(progressBar(fraction), fraction);
-      });
-      const RenderStatistics& stats = result.statistics;
-      json run{{"label", material.label},
-               {"material", material.completed},
-               {"seconds", stats.seconds},
-               {"samples", stats.samples},
-               {"vertices", stats.vertices},
-               {"samples_per_second", double(stats.samples) / stats.seconds},
-               {"vertices_per_second", double(stats.vertices) / stats.seconds},
-               {"non_finite_samples", stats.nonFiniteSamples},
-               {"negative_samples", stats.negativeSamples},
-               {"dropped_samples", stats.droppedSamples()}};
-      droppedSamples += stats.droppedSamples();
-      droppedMessages += droppedSampleMessage(material.label, stats);
-      if (preset == ScenePreset::MaterialSphere) {
-        const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
-        run["sphere"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Sphere));
-        run["background"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Background));
-      }
-      runs.push_back(std::move(run));
-      results.push_back(std::move(result));
+};
+
+// Renders every material of the plan (consuming them) in order.
+RenderRuns renderMaterials(RenderPlan& plan, bool showProgress) {
+  RenderRuns out;
+  const Resolution& resolution = plan.resolution;
+  ProgressLine progress;
+  for (size_t i = 0; i < plan.materials.size(); ++i) {
+    MaterialToRender& material = plan.materials[i];
+    const Scene scene = makeMaterialScene(plan.preset, std::move(material.material), plan.subsurfaceMode,
+                                          plan.lighting, resolution.width, resolution.height);
+    const std::string step =
+        plan.gallery ? "[" + std::to_string(i + 1) + "/" + std::to_string(plan.materials.size()) + "] " : "";
+    const ProgressCallback report =
+        showProgress ? progress.callback("render " + step + material.label) : ProgressCallback();
+    RenderResult result = render(scene, plan.settings, [&](double fraction) {
+      if (report) report(progressBar(fraction), fraction);
+    });
+    const RenderStatistics& stats = result.statistics;
+    json run{{"label", material.label},
+             {"material", material.completed},
+             {"seconds", stats.seconds},
+             {"samples", stats.samples},
+             {"vertices", stats.vertices},
+             {"samples_per_second", double(stats.samples) / stats.seconds},
+             {"vertices_per_second", double(stats.vertices) / stats.seconds},
+             {"non_finite_samples", stats.nonFiniteSamples},
+             {"negative_samples", stats.negativeSamples},
+             {"dropped_samples", stats.droppedSamples()}};
+    out.droppedSamples += stats.droppedSamples();
+    out.droppedMessages += droppedSampleMessage(material.label, stats);
+    if (plan.preset == ScenePreset::MaterialSphere) {
+      const SilhouetteMask mask = silhouetteMask(scene.camera(), presetSphere());
+      run["sphere"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Sphere));
+      run["background"] = statisticsJson(regionStatistics(result.color, mask, PixelRegion::Background));
     }
+    out.runs.push_back(std::move(run));
+    out.results.push_back(std::move(result));
   }
+  return out;
+}
 
-  std::cerr << droppedMessages;
+// What --json prints; `paths` null for a run that writes nothing.
+json runJson(const RenderCommandOptions& options, const RenderPlan& plan, const RenderRuns& runs,
+             const OutputPaths* paths) {
+  return {{"integrator", options.integrator},
+          {"scene", options.scene},
+          {"env", environmentChoice(options, plan.preset)},
+          {"environment", plan.environment},
+          {"light", lightJson(plan.lighting)},
+          {"env_strength", options.envStrength},
+          {"env_rotate_degrees", options.envRotateDegrees},
+          {"res", {plan.resolution.width, plan.resolution.height}},
+          {"spp", options.spp},
+          {"threads", options.threads},
+          {"seed", options.seed},
+          {"max_depth", options.maxDepth},
+          {"estimator", plan.integrator == IntegratorKind::Path
+                            ? json(options.estimator.empty() ? "mis" : options.estimator)
+                            : json(nullptr)},
+          {"subsurface", options.subsurface},
+          {"filter", options.filter},
+          {"exr", paths ? json(paths->exr.string()) : json(nullptr)},
+          {"png", paths ? json(paths->png.string()) : json(nullptr)},
+          {"renders", runs.runs},
+          {"dropped_samples", runs.droppedSamples},
+          {"passed", runs.droppedSamples == 0}};
+}
 
-  // ---- Write.
-  if (gallery) {
-    std::vector<ContactSheetEntry> entries;
-    for (size_t i = 0; i < results.size(); ++i) entries.push_back({&results[i].color, materials[i].label});
-    ContactSheetLayout layout;
-    layout.columns = options.columns;
-    const Image sheet = composeContactSheet(entries, layout);
-    writeBoth(outputs, paths, {{"", {"R", "G", "B"}, &sheet}}, sheet, options.exposure);
-  } else {
-    const RenderResult& result = results.front();
-    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, &result.color}};
-    if (settings.albedoLayer) layers.push_back({"albedo", {"R", "G", "B"}, &result.albedo});
-    if (settings.normalLayer) layers.push_back({"normal", {"X", "Y", "Z"}, &result.normal});
-    if (settings.varianceLayer) layers.push_back({"variance", {"R", "G", "B"}, &result.variance});
-    writeBoth(outputs, paths, layers, result.color, options.exposure);
-  }
-
-  if (options.json) {
-    std::cout << json{{"integrator", options.integrator},
-                      {"scene", options.scene},
-                      {"env", environmentChoice(options, preset)},
-                      {"environment", loaded.description},
-                      {"light", lightJson(lighting)},
-                      {"env_strength", options.envStrength},
-                      {"env_rotate_degrees", options.envRotateDegrees},
-                      {"res", {resolution->width, resolution->height}},
-                      {"spp", options.spp},
-                      {"threads", options.threads},
-                      {"seed", options.seed},
-                      {"max_depth", options.maxDepth},
-                      {"estimator", integrator == IntegratorKind::Path
-                                        ? json(options.estimator.empty() ? "mis" : options.estimator)
-                                        : json(nullptr)},
-                      {"subsurface", options.subsurface},
-                      {"filter", options.filter},
-                      {"exr", paths.exr.string()},
-                      {"png", paths.png.string()},
-                      {"renders", runs},
-                      {"dropped_samples", droppedSamples},
-                      {"passed", droppedSamples == 0}}
-                     .dump(2, ' ', false, json::error_handler_t::replace)
-              << "\n";
-    return droppedSampleStatus(droppedSamples);
-  }
-  for (const json& run : runs) {
-    std::cout << run["label"].get<std::string>() << ": " << resolution->width << "x" << resolution->height
-              << ", " << options.spp << (integrator == IntegratorKind::Sppm ? " iterations, " : " spp, ")
+void printRuns(const RenderCommandOptions& options, const RenderPlan& plan, const RenderRuns& runs,
+               const OutputPaths& paths) {
+  const Resolution& resolution = plan.resolution;
+  for (const json& run : runs.runs) {
+    std::cout << run["label"].get<std::string>() << ": " << resolution.width << "x" << resolution.height
+              << ", " << options.spp << (plan.integrator == IntegratorKind::Sppm ? " iterations, " : " spp, ")
               << options.integrator << ", " << run["seconds"].get<double>() << " s, "
               << run["vertices_per_second"].get<double>() / 1e6 << " M path vertices/s";
     for (const char* region : {"sphere", "background"}) {
       if (!run.contains(region)) continue;
       if (run[region]["n"].get<size_t>() == 0)
-        std::cout << ", " << region << " mean undefined at " << resolution->width << "x" << resolution->height
+        std::cout << ", " << region << " mean undefined at " << resolution.width << "x" << resolution.height
                   << " (" << EmptyRegionNote << ")";
       else
         std::cout << ", " << region << " mean " << run[region]["mean"].get<double>();
@@ -604,7 +601,68 @@ int runRenderCommand(const RenderCommandOptions& options) {
     std::cout << "\n";
   }
   std::cout << "wrote " << paths.exr.string() << " and " << paths.png.string() << "\n";
-  return droppedSampleStatus(droppedSamples);
+}
+
+}  // namespace
+
+RenderReport renderReport(const RenderCommandOptions& options, bool progress) {
+  if (options.materials.size() != 1)
+    throw InputError("material: " + std::to_string(options.materials.size()) +
+                     " given; allowed: one material (a gallery is the command line's)");
+  RenderPlan plan = planRender(options);
+  RenderRuns runs = renderMaterials(plan, progress);
+  std::cerr << runs.droppedMessages;
+  RenderReport report{runJson(options, plan, runs, nullptr), std::move(runs.results.front())};
+  return report;
+}
+
+int runRenderCommand(const RenderCommandOptions& options) {
+  RenderPlan plan = planRender(options);
+  StagedOutputs outputs(plan.inputs);
+  const OutputPaths paths = addOutputs(outputs, options.out);
+
+  // ---- Claim the outputs (nothing is written before this point: an unwritable one is bad
+  // input now, not after the work), then announce long work.
+  outputs.prepare();
+  const double totalSamples = double(plan.pixels) * double(options.spp) * double(plan.materials.size());
+  constexpr double PilotAboveSamples = 5e7;  // ~10 s at a few million samples per second
+  if (totalSamples > PilotAboveSamples)
+    announceWork({"render: " + std::to_string(plan.materials.size()) + " x " +
+                      std::to_string(plan.resolution.width) + "x" + std::to_string(plan.resolution.height) +
+                      " px x " + std::to_string(options.spp) + " spp",
+                  estimateRenderSeconds(plan.preset, plan.materials, plan.subsurfaceMode, plan.lighting,
+                                        plan.resolution, plan.settings),
+                  imageBytes(plan.pixels, plan.materials.size(), int(options.layers.size()), plan.gallery)});
+
+  // ---- Render.
+  const RenderRuns runs = renderMaterials(plan, true);
+  std::cerr << runs.droppedMessages;
+
+  // ---- Write.
+  const std::vector<RenderResult>& results = runs.results;
+  if (plan.gallery) {
+    std::vector<ContactSheetEntry> entries;
+    for (size_t i = 0; i < results.size(); ++i)
+      entries.push_back({&results[i].color, plan.materials[i].label});
+    ContactSheetLayout layout;
+    layout.columns = options.columns;
+    const Image sheet = composeContactSheet(entries, layout);
+    writeBoth(outputs, paths, {{"", {"R", "G", "B"}, &sheet}}, sheet, options.exposure);
+  } else {
+    const RenderResult& result = results.front();
+    std::vector<ExrLayer> layers{{"", {"R", "G", "B"}, &result.color}};
+    if (plan.settings.albedoLayer) layers.push_back({"albedo", {"R", "G", "B"}, &result.albedo});
+    if (plan.settings.normalLayer) layers.push_back({"normal", {"X", "Y", "Z"}, &result.normal});
+    if (plan.settings.varianceLayer) layers.push_back({"variance", {"R", "G", "B"}, &result.variance});
+    writeBoth(outputs, paths, layers, result.color, options.exposure);
+  }
+
+  if (options.json)
+    std::cout << runJson(options, plan, runs, &paths).dump(2, ' ', false, json::error_handler_t::replace)
+              << "\n";
+  else
+    printRuns(options, plan, runs, paths);
+  return droppedSampleStatus(runs.droppedSamples);
 }
 
 }  // namespace scatterlab

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "integrator/render.h"
 #include "integrator/scene_presets.h"
@@ -53,6 +54,16 @@ CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options);
 
 // Returns 0; bad input throws MaterialError or InputError (exit 2) before anything is written.
 int runRenderCommand(const RenderCommandOptions& options);
+
+// One material rendered as the command renders it, validated the same way (all but --out, which
+// it does not use), writing nothing: what --json prints (with "exr" and "png" null) and the
+// images. The progress line on stderr with `progress`. The Python package's sl.render
+// (docs/python.md).
+struct RenderReport {
+  nlohmann::json report;
+  RenderResult result;
+};
+RenderReport renderReport(const RenderCommandOptions& options, bool progress);
 
 // "WxH" (or "N" for N x N) within the renderer's limits (integrator/render.h), or nothing.
 struct Resolution {

@@ -11,6 +11,7 @@
 #   P/share/scatterlab/                        run-time data (environment maps, the RGL measurements the
 #                                              lab shows), example materials and sweeps
 #   P/share/doc/scatterlab/examples/own-bsdf   the out-of-tree example
+#   P/share/doc/scatterlab/examples/notebook.py the Python walk-through (docs/python.md)
 # and a Debian package through CPack (`cpack -G DEB` in the build directory).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -46,6 +47,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/envmaps ${PROJECT_SOURCE_DIR}/data/
                   ${PROJECT_SOURCE_DIR}/data/sweeps
         DESTINATION ${CMAKE_INSTALL_DATADIR}/scatterlab)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/examples/own-bsdf DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
+install(FILES ${PROJECT_SOURCE_DIR}/examples/notebook.py DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
 
 # A .deb of the same tree; its dependencies are the Debian packages scripts/setup installs for
 # the libraries a user links (headers included) and the run-time libraries of the executable.

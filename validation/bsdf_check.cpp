@@ -217,18 +217,17 @@ int chiSquareTestCount(const BsdfCheckOptions& options, const BsdfModel& model) 
   return int(incidentAngles(options, model).size());
 }
 
-CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
-                          const ProgressCallback& progress) {
-  CheckReport report;
+CheckReport runBsdfChecksAtAngle(const BsdfModel& model, const std::string& label,
+                                 const BsdfCheckOptions& options, size_t angleIndex) {
   const std::vector<double> angles = incidentAngles(options, model);
-  const double threshold = perTestThreshold(options, int(angles.size()));
-  const size_t steps = angles.size() + 1;
-  for (size_t k = 0; k < angles.size(); ++k) {
-    if (progress) progress(label + ": wi " + format("%g", angles[k]) + " deg", double(k) / steps);
-    report.append(
-        checkAtIncidentAngle(model, label, options, angles[k], deriveSeed(options.seed, k), threshold));
-  }
-  if (progress) progress(label + ": reciprocity", double(steps - 1) / steps);
+  return checkAtIncidentAngle(model, label, options, angles.at(angleIndex),
+                              deriveSeed(options.seed, angleIndex),
+                              perTestThreshold(options, int(angles.size())));
+}
+
+CheckReport runReciprocityChecks(const BsdfModel& model, const std::string& label,
+                                 const BsdfCheckOptions& options) {
+  CheckReport report;
   // Through a refraction the relation depends on the transport mode (reciprocity.h): models
   // with transmission get all three forms, each a row.
   struct Relation {
@@ -265,7 +264,65 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
     }
     report.rows.push_back(row);
   }
+  return report;
+}
+
+CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, const BsdfCheckOptions& options,
+                          const ProgressCallback& progress) {
+  CheckReport report;
+  const std::vector<double> angles = incidentAngles(options, model);
+  const size_t steps = angles.size() + 1;
+  for (size_t k = 0; k < angles.size(); ++k) {
+    if (progress) progress(label + ": wi " + format("%g", angles[k]) + " deg", double(k) / steps);
+    report.append(runBsdfChecksAtAngle(model, label, options, k));
+  }
+  if (progress) progress(label + ": reciprocity", double(steps - 1) / steps);
+  report.append(runReciprocityChecks(model, label, options));
   if (progress) progress(label + ": done", 1.0);
+  return report;
+}
+
+CheckReport runNegativeControl(const BsdfModel& model, const BsdfModel* alteredSampler,
+                               const std::string& label, const BsdfCheckOptions& options,
+                               NegativeControl control, size_t angleIndex) {
+  CheckReport report;
+  const std::string test = "control: " + toString(control);
+  if (control == NegativeControl::RoughnessMismatch && !alteredSampler) {
+    CheckRow row;
+    row.material = label;
+    row.test = test;
+    row.passed = true;
+    row.note = "not applicable: the model has no lobe-width parameter";
+    report.rows.push_back(row);
+    return report;
+  }
+  const std::vector<double> angles = incidentAngles(options, model);
+  const double wiTheta = angles.at(angleIndex);
+  const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
+  const std::unique_ptr<BsdfModel> broken = makeNegativeControl(control, model, wi, alteredSampler);
+  if (const std::optional<std::string> noOp = negativeControlIsNoOp(control, model, *broken, wi)) {
+    CheckRow row;
+    row.material = label;
+    row.test = test;
+    row.wiThetaDeg = wiTheta;
+    row.passed = true;
+    row.note = *noOp;
+    report.rows.push_back(row);
+    return report;
+  }
+  ChiSquareOptions chiOptions;
+  chiOptions.grid = SphericalGrid{options.thetaBins, options.phiBins};
+  chiOptions.sampleCount = options.samples;
+  chiOptions.seed = deriveSeed(options.seed, angleIndex);
+  chiOptions.threshold = perTestThreshold(options, int(angles.size()));
+  chiOptions.quadrature = kitQuadrature(options.samples);
+  const ChiSquareResult r = bsdfChiSquareTest(*broken, wi, chiOptions, energyTransportMode(model));
+  CheckRow row = chiSquareRow(label, test, wiTheta, r);
+  // This row passes when the kit rejects the broken sampler.
+  row.passed = !r.passed;
+  row.note = (r.passed ? "NOT rejected: the kit cannot see this error here" : "rejected") +
+             (r.failure.empty() ? std::string() : " (" + r.failure + ")");
+  report.rows.push_back(row);
   return report;
 }
 
@@ -274,51 +331,17 @@ CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* altered
                                 const ProgressCallback& progress) {
   CheckReport report;
   const std::vector<double> angles = incidentAngles(options, model);
-  const double threshold = perTestThreshold(options, int(angles.size()));
-  const TransportMode mode = energyTransportMode(model);
-  const SphericalGrid grid{options.thetaBins, options.phiBins};
   const auto controls = allNegativeControls();
   for (size_t c = 0; c < controls.size(); ++c) {
-    const std::string test = "control: " + toString(controls[c]);
-    if (controls[c] == NegativeControl::RoughnessMismatch && !alteredSampler) {
-      CheckRow row;
-      row.material = label;
-      row.test = test;
-      row.passed = true;
-      row.note = "not applicable: the model has no lobe-width parameter";
-      report.rows.push_back(row);
-      continue;
-    }
-    for (size_t k = 0; k < angles.size(); ++k) {
-      const double wiTheta = angles[k];
+    // A control that does not apply is one row, whatever the angles.
+    const size_t angleCount =
+        controls[c] == NegativeControl::RoughnessMismatch && !alteredSampler ? 1 : angles.size();
+    for (size_t k = 0; k < angleCount; ++k) {
       if (progress)
-        progress(label + ": " + test + " wi " + format("%g", wiTheta),
+        progress(label + ": control: " + toString(controls[c]) +
+                     (k < angles.size() ? " wi " + format("%g", angles[k]) : std::string()),
                  double(c * angles.size() + k) / double(controls.size() * angles.size()));
-      const Vec3d wi = directionFromDegrees(wiTheta, options.wiPhiDeg);
-      const std::unique_ptr<BsdfModel> broken = makeNegativeControl(controls[c], model, wi, alteredSampler);
-      if (const std::optional<std::string> noOp = negativeControlIsNoOp(controls[c], model, *broken, wi)) {
-        CheckRow row;
-        row.material = label;
-        row.test = test;
-        row.wiThetaDeg = wiTheta;
-        row.passed = true;
-        row.note = *noOp;
-        report.rows.push_back(row);
-        continue;
-      }
-      ChiSquareOptions chiOptions;
-      chiOptions.grid = grid;
-      chiOptions.sampleCount = options.samples;
-      chiOptions.seed = deriveSeed(options.seed, k);
-      chiOptions.threshold = threshold;
-      chiOptions.quadrature = kitQuadrature(options.samples);
-      const ChiSquareResult r = bsdfChiSquareTest(*broken, wi, chiOptions, mode);
-      CheckRow row = chiSquareRow(label, test, wiTheta, r);
-      // This row passes when the kit rejects the broken sampler.
-      row.passed = !r.passed;
-      row.note = (r.passed ? "NOT rejected: the kit cannot see this error here" : "rejected") +
-                 (r.failure.empty() ? std::string() : " (" + r.failure + ")");
-      report.rows.push_back(row);
+      report.append(runNegativeControl(model, alteredSampler, label, options, controls[c], k));
     }
   }
   return report;

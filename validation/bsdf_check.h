@@ -19,6 +19,7 @@
 
 #include "materials/bsdf/bsdf.h"
 #include "validation/check_report.h"
+#include "validation/negative_controls.h"
 
 namespace scatterlab {
 
@@ -56,6 +57,20 @@ CheckReport runBsdfChecks(const BsdfModel& model, const std::string& label, cons
 CheckReport runNegativeControls(const BsdfModel& model, const BsdfModel* alteredSampler,
                                 const std::string& label, const BsdfCheckOptions& options,
                                 const ProgressCallback& progress = {});
+
+// The units runBsdfChecks and runNegativeControls are made of, for callers that run them one at a
+// time to bound what they hold at once (the Python kit's replay of a Python object,
+// docs/python.md): the rows of incident angle incidentAngles(options, model)[angleIndex]
+// (its seed and Sidak threshold as in the whole run), the reciprocity rows, and one negative
+// control at one angle (one not-applicable row, whatever angleIndex, for RoughnessMismatch
+// without `alteredSampler`). Concatenated in runBsdfChecks' order they are its report.
+CheckReport runBsdfChecksAtAngle(const BsdfModel& model, const std::string& label,
+                                 const BsdfCheckOptions& options, size_t angleIndex);
+CheckReport runReciprocityChecks(const BsdfModel& model, const std::string& label,
+                                 const BsdfCheckOptions& options);
+CheckReport runNegativeControl(const BsdfModel& model, const BsdfModel* alteredSampler,
+                               const std::string& label, const BsdfCheckOptions& options,
+                               NegativeControl control, size_t angleIndex);
 
 // Number of chi-square tests runBsdfChecks will perform with these options (for the
 // Sidak correction when several materials are checked together): the listed angles for a
