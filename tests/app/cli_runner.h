@@ -41,6 +41,13 @@ inline fs::path uniquePath(const std::string& stem) {
   return path;
 }
 
+// `text` written to a fresh file under the test output (uniquePath(stem)), for an input file.
+inline fs::path writeInputFile(const std::string& stem, const std::string& text) {
+  const fs::path path = uniquePath(stem);
+  std::ofstream(path) << text;
+  return path;
+}
+
 inline std::string readFile(const fs::path& path) {
   std::ifstream file(path);
   std::ostringstream contents;

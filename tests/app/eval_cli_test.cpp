@@ -24,12 +24,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 using namespace cli_runner;
 
-fs::path writeText(const std::string& stem, const std::string& text) {
-  const fs::path path = uniquePath(stem);
-  std::ofstream(path) << text;
-  return path;
-}
-
 json evalJson(const std::vector<std::string>& args) {
   const ProcessResult run = runScatterlab(std::vector<std::string>{"eval", "--json"} + args);
   EXPECT_EQ(run.exitCode, 0) << describe(run);
@@ -94,14 +88,14 @@ TEST(EvalCli, LambertianByAnglesIsAlbedoOverPi) {
 // Components with 6 significant digits (length 1 + 5e-6): accepted, and evaluated as the unit
 // vector they stand for.
 TEST(EvalCli, NearlyUnitDirectionsAreNormalised) {
-  const fs::path file = writeText("pairs.json", R"([{"wi": [0.6, 0, 0.800004], "wo": [0, 0, 1]}])");
+  const fs::path file = writeInputFile("pairs.json", R"([{"wi": [0.6, 0, 0.800004], "wo": [0, 0, 1]}])");
   const json printed = evalJson({R"({"type": "lambertian"})", "--directions", file.string()});
   ASSERT_EQ(printed["values"].size(), 1u);
   EXPECT_NEAR(glm::length(vectorOf(printed["values"][0]["wi"])), 1.0, 1e-15);
 }
 
 TEST(EvalCli, TextOutputHasOneRowPerPair) {
-  const fs::path file = writeText("pairs.json", somePairs().dump());
+  const fs::path file = writeInputFile("pairs.json", somePairs().dump());
   const ProcessResult run =
       runScatterlab({"eval", R"({"type": "conductor"})", "--directions", file.string()});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
@@ -114,7 +108,7 @@ TEST(EvalCli, TextOutputHasOneRowPerPair) {
 // Every registry type at its defaults prints its model's own numbers, from a directions file.
 TEST(EvalCli, EveryRegistryTypePrintsItsModelsValues) {
   const json pairs = somePairs();
-  const fs::path file = writeText("pairs.json", pairs.dump());
+  const fs::path file = writeInputFile("pairs.json", pairs.dump());
   for (const MaterialModel& model : materialModels()) {
     if (model.type == "measured") continue;  // needs a file: MeasuredTableByBarePathOrDescription
     const json material{{"type", model.type}};
@@ -146,7 +140,7 @@ TEST(EvalCli, MeasuredTableByBarePathOrDescription) {
   const fs::path file = uniquePath("lambert.binary");
   writeMerl(file, table);
   const json pairs = somePairs();
-  const fs::path pairsFile = writeText("pairs.json", pairs.dump());
+  const fs::path pairsFile = writeInputFile("pairs.json", pairs.dump());
   const json bare = evalJson({file.string(), "--directions", pairsFile.string()});
   const json described = evalJson(
       {json{{"type", "measured"}, {"file", file.string()}}.dump(), "--directions", pairsFile.string()});
@@ -170,7 +164,7 @@ TEST(EvalCli, MeasuredTableByBarePathOrDescription) {
 class EvalCliBadInput : public ::testing::Test {
  protected:
   void expectPairsRefused(const std::string& pairsJson, const std::vector<std::string>& fragments) {
-    const fs::path file = writeText("bad-pairs.json", pairsJson);
+    const fs::path file = writeInputFile("bad-pairs.json", pairsJson);
     expectBadInput({"eval", R"({"type": "lambertian"})", "--directions", file.string()},
                    std::vector<std::string>{"--directions file", file.string()} + fragments);
   }
@@ -212,7 +206,7 @@ TEST_F(EvalCliBadInput, DirectionsFileAndAngles) {
                  {"--wi", "\"200,0\"", "THETA in [0, 180]"});
   expectBadInput({"eval", lambert, "--wi", "nan,0", "--wo", "0,0"}, {"--wi", "\"nan,0\"", "not a direction"});
   expectBadInput({"eval", lambert, "--wi", "30", "--wo", "0,0"}, {"--wi", "\"30\""});
-  const fs::path file = writeText("pairs.json", somePairs().dump());
+  const fs::path file = writeInputFile("pairs.json", somePairs().dump());
   expectBadInput({"eval", lambert, "--directions", file.string(), "--wi", "0,0", "--wo", "0,0"},
                  {"--directions and --wi/--wo both given"});
 }
@@ -223,7 +217,7 @@ TEST_F(EvalCliBadInput, Materials) {
   expectBadInput({"eval", uniquePath("missing-material.json").string(), "--wi", "0,0", "--wo", "0,0"},
                  {"not found"});
   // A file that is not JSON is read as a measured table, whose reader refuses it by name.
-  const fs::path notATable = writeText("not-a-table.binary", "this is not a table");
+  const fs::path notATable = writeInputFile("not-a-table.binary", "this is not a table");
   expectBadInput({"eval", notATable.string(), "--wi", "0,0", "--wo", "0,0"},
                  {notATable.string(), "\"file\""});
   expectBadInput({"eval"}, {"material"});

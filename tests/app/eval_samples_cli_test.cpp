@@ -19,12 +19,6 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 using namespace cli_runner;
 
-fs::path writeText(const std::string& stem, const std::string& text) {
-  const fs::path path = uniquePath(stem);
-  std::ofstream(path) << text;
-  return path;
-}
-
 json vectorJson(const Vec3d& v) { return json::array({v.x, v.y, v.z}); }
 Vec3d vectorOf(const json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
 
@@ -48,7 +42,7 @@ json someQueries() {
 // process at the incident directions the executable reports (JSON round-trips a double exactly).
 TEST(EvalSamplesCli, EveryRegistryTypePrintsItsSamplersValues) {
   const json queries = someQueries();
-  const fs::path file = writeText("samples.json", queries.dump());
+  const fs::path file = writeInputFile("samples.json", queries.dump());
   for (const MaterialModel& entry : materialModels()) {
     if (entry.type == "measured") continue;  // needs a file; the measured sampler has its own tests
     const json material{{"type", entry.type}};
@@ -77,7 +71,7 @@ TEST(EvalSamplesCli, EveryRegistryTypePrintsItsSamplersValues) {
 // A smooth mirror at 30 degrees: the one sample is the mirror direction, a delta lobe of
 // probability 1.
 TEST(EvalSamplesCli, SmoothConductorSamplesTheMirrorDirection) {
-  const fs::path file = writeText(
+  const fs::path file = writeInputFile(
       "samples.json",
       json::array({{{"wi", vectorJson(directionFromDegrees(30, 0))}, {"u_lobe", 0.5}, {"u", {0.5, 0.5}}}})
           .dump());
@@ -93,7 +87,7 @@ TEST(EvalSamplesCli, SmoothConductorSamplesTheMirrorDirection) {
 }
 
 TEST(EvalSamplesCli, TextOutputHasOneRowPerQuery) {
-  const fs::path file = writeText("samples.json", someQueries().dump());
+  const fs::path file = writeInputFile("samples.json", someQueries().dump());
   const ProcessResult run = runScatterlab({"eval", R"({"type": "lambertian"})", "--samples", file.string()});
   ASSERT_EQ(run.exitCode, 0) << describe(run);
   size_t rows = 0;
@@ -103,7 +97,7 @@ TEST(EvalSamplesCli, TextOutputHasOneRowPerQuery) {
 }
 
 void expectQueriesRefused(const std::string& text, const std::vector<std::string>& fragments) {
-  const fs::path file = writeText("samples.json", text);
+  const fs::path file = writeInputFile("samples.json", text);
   expectBadInput({"eval", R"({"type": "lambertian"})", "--samples", file.string()},
                  std::vector<std::string>{"--samples file", file.string()} + fragments);
 }
@@ -121,7 +115,7 @@ TEST(EvalSamplesCli, BadQueriesAreRefusedNamingTheKey) {
 }
 
 TEST(EvalSamplesCli, SamplesWithDirectionsOrAnglesIsRefused) {
-  const fs::path file = writeText("samples.json", someQueries().dump());
+  const fs::path file = writeInputFile("samples.json", someQueries().dump());
   expectBadInput(
       {"eval", R"({"type": "lambertian"})", "--samples", file.string(), "--wi", "0,0", "--wo", "0,0"},
       {"--samples and --wi/--wo both given"});
