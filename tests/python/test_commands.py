@@ -87,7 +87,7 @@ def test_fit_refuses_out_because_the_result_is_returned():
 
 
 def test_fit_refuses_a_value_out_of_range_with_the_command_lines_message():
-    with pytest.raises(ValueError, match=r"--samples"):
+    with pytest.raises(ValueError, match=r"sl\.fit: --samples: \"-5\" .*allowed: an integer >= 0"):
         sl.fit(TRUTH, model=MODEL, metric="ngan", samples=-5, progress=False)
 
 
