@@ -22,9 +22,9 @@ namespace {
 
 }  // namespace
 
-EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path) {
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path, long maxPixels) {
   const std::string name = "environment map \"" + path.string() + "\"";
-  EnvironmentMapFile file{readExrRgb(path, "environment map")};
+  EnvironmentMapFile file{readExrRgb(path, "environment map", maxPixels)};
   Image& image = file.image;
   if (image.width() != 2 * image.height())
     throw RenderInputError(

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <filesystem>
 
+#include "integrator/exr_io.h"
 #include "integrator/image.h"
 
 namespace scatterlab {
@@ -27,6 +28,7 @@ struct EnvironmentMapFile {
 // The map's RGB, checked: readable OpenEXR (exr_io.h), width exactly twice the height, every
 // value finite and not below -NegativeTolerance x the mean. Throws RenderInputError naming the
 // file and, for a bad value, the pixel (column, row from the top), channel and value.
-EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path);
+// `maxPixels` as readExrRgb's.
+EnvironmentMapFile readEnvironmentMap(const std::filesystem::path& path, long maxPixels = MaxExrPixels);
 
 }  // namespace scatterlab

@@ -1,8 +1,11 @@
 #include "integrator/exr_io.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <system_error>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -79,11 +82,90 @@ void checkReadable(const std::filesystem::path& path, const std::string& name) {
     throw RenderInputError(name + ": is a directory; allowed: an OpenEXR file");
 }
 
+// The data window's size, against the limits of readExrRgb (exr_io.h).
+void checkDataWindow(const std::string& name, long width, long height, long maxPixels) {
+  constexpr long MaxSide = 1 << 16;
+  if (width < 1 || height < 1 || width > MaxSide || height > MaxSide || width * height > maxPixels)
+    throw RenderInputError(name + ": data window of " + std::to_string(width) + " x " +
+                           std::to_string(height) + " pixels; allowed: 1 to " + std::to_string(MaxSide) +
+                           " pixels per side and at most " + std::to_string(maxPixels) + " pixels" +
+                           (maxPixels == MaxExrPixels ? " (8192 x 4096)" : "") +
+                           ", checked before the pixels are read");
+}
+
+int32_t littleEndian32(const unsigned char* bytes) {
+  return int32_t(uint32_t(bytes[0]) | uint32_t(bytes[1]) << 8 | uint32_t(bytes[2]) << 16 |
+                 uint32_t(bytes[3]) << 24);
+}
+
+// OpenEXR allocates (and zeroes) each header attribute's value at the size the file declares
+// before it reads it, so a few bytes declaring a 2 GB attribute cost 2 GB. The attributes are
+// walked here first, as OpenEXR's Header::readFrom reads them (the file layout: a 4-byte magic
+// number, a 4-byte version whose bit 12 marks a multi-part file; then per part the attributes
+// "name\0type\0", each text at most 255 bytes, a 4-byte little-endian size and the value; a header
+// ends in an empty name, and a multi-part file's list of headers in an empty header), and a size
+// beyond the bytes left in the file is refused. (OpenEXR reads a known type by its structure, a
+// channel list up to its end marker, so after a size field that lies the two walks may part; a
+// valid file's sizes are exact.) OpenEXR also sizes buffers from the data window
+// as it opens the file, so a "dataWindow" attribute is checked here too (with `maxPixels`; none:
+// no pixel limit, as for readExrChannelNames). What OpenEXR itself refuses (no magic number, a
+// text without its 0) is left to it.
+void checkHeader(const std::filesystem::path& path, const std::string& name, std::optional<long> maxPixels) {
+  std::ifstream in(path, std::ios::binary);
+  std::error_code error;
+  const auto fileSize = std::filesystem::file_size(path, error);
+  unsigned char start[8];
+  if (error || !in.read(reinterpret_cast<char*>(start), 8)) return;
+  if (!(start[0] == 0x76 && start[1] == 0x2f && start[2] == 0x31 && start[3] == 0x01)) return;
+  const bool multiPart = (start[5] & 0x10) != 0;
+  constexpr size_t MaxText = 255;  // OpenEXR's Name::MAX_LENGTH
+  const auto readText = [&](std::string& text) {
+    text.clear();
+    for (char c; in.get(c);) {
+      if (c == '\0') return true;
+      if (text.size() == MaxText) return false;
+      text.push_back(c);
+    }
+    return false;
+  };
+  for (bool firstInPart = true;;) {
+    std::string attribute, type;
+    if (!readText(attribute)) return;
+    if (attribute.empty()) {
+      // The end of a header: of the file's only one, or, in a multi-part file, the end of the
+      // list when the header was empty.
+      if (!multiPart || firstInPart) return;
+      firstInPart = true;
+      continue;
+    }
+    firstInPart = false;
+    unsigned char size[4];
+    if (!readText(type) || !in.read(reinterpret_cast<char*>(size), 4)) return;
+    const uint64_t declared = uint32_t(littleEndian32(size));
+    const uint64_t at = uint64_t(in.tellg());
+    if (declared > fileSize - std::min<uint64_t>(at, fileSize))
+      throw RenderInputError(name + ": header attribute \"" + attribute + "\" (" + type + ") declares " +
+                             std::to_string(littleEndian32(size)) + " bytes, but " +
+                             std::to_string(fileSize - at) +
+                             " are left in the file; allowed: an OpenEXR file whose attributes fit in it");
+    unsigned char box[16];
+    if (maxPixels && attribute == "dataWindow" && type == "box2i" && declared == 16 &&
+        in.read(reinterpret_cast<char*>(box), 16)) {
+      // xMin, yMin, xMax, yMax
+      checkDataWindow(name, long(littleEndian32(box + 8)) - littleEndian32(box) + 1,
+                      long(littleEndian32(box + 12)) - littleEndian32(box + 4) + 1, *maxPixels);
+      continue;
+    }
+    in.seekg(std::streamoff(declared), std::ios::cur);
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> readExrChannelNames(const std::filesystem::path& path) {
   const std::string name = "EXR file " + inQuotes(path.string());
   checkReadable(path, name);
+  checkHeader(path, name, std::nullopt);
   try {
     const Imf::InputFile file(path.c_str());
     std::vector<std::string> names;
@@ -96,19 +178,16 @@ std::vector<std::string> readExrChannelNames(const std::filesystem::path& path) 
   }
 }
 
-Image readExrRgb(const std::filesystem::path& path, const std::string& what) {
+Image readExrRgb(const std::filesystem::path& path, const std::string& what, long maxPixels) {
   const std::string name = what + " " + inQuotes(path.string());
   checkReadable(path, name);
+  maxPixels = std::min(maxPixels, MaxExrPixels);
+  checkHeader(path, name, maxPixels);
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i window = file.header().dataWindow();
     const long width = long(window.max.x) - window.min.x + 1, height = long(window.max.y) - window.min.y + 1;
-    constexpr long MaxSide = 1 << 16;
-    if (width < 1 || height < 1 || width > MaxSide || height > MaxSide || width * height > MaxExrPixels)
-      throw RenderInputError(name + ": data window of " + std::to_string(width) + " x " +
-                             std::to_string(height) + " pixels; allowed: 1 to " + std::to_string(MaxSide) +
-                             " pixels per side and at most " + std::to_string(MaxExrPixels) +
-                             " pixels (8192 x 4096), checked before the pixels are read");
+    checkDataWindow(name, width, height, maxPixels);
     const Imf::ChannelList& channels = file.header().channels();
     const bool rgb = channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B");
     const bool grey = !rgb && channels.findChannel("Y");

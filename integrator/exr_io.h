@@ -31,8 +31,10 @@ inline constexpr long MaxExrPixels = 1L << 25;
 // data window into a 3-channel float image, any stored pixel type converted to float. Throws
 // RenderInputError naming the file and the problem: not found, a directory, not an EXR file,
 // truncated or otherwise unreadable, too many pixels, no R, G, B or Y channels. `what` begins
-// the message ("environment map").
-Image readExrRgb(const std::filesystem::path& path, const std::string& what = "EXR file");
+// the message ("environment map"). `maxPixels` lowers the pixel limit (a fuzz harness's, so that
+// an input claiming a huge image costs little; fuzz/harness/exr_environment_map.cpp).
+Image readExrRgb(const std::filesystem::path& path, const std::string& what = "EXR file",
+                 long maxPixels = MaxExrPixels);
 
 // The channel names of an EXR file, in the file's (alphabetical) order. Throws
 // RenderInputError like readExrRgb.

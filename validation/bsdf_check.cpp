@@ -116,34 +116,42 @@ CheckReport checkAtIncidentAngle(const BsdfModel& model, const std::string& labe
   CheckReport report;
 
   const SampleHistogram histogram = drawSamples(grid, bsdfDirectionSampler(model, wi, mode), n, seed);
-  const auto integrals =
-      integrateCellsWithError(grid, bsdfEnergyIntegrand(model, wi, mode), histogram.probes, kitQuadrature(n));
+
+  // Weights must match eval |cos| / pdf in whichever mode a caller uses: with transmission,
+  // both modes are checked, and how they relate. The second mode's checks are per-sample
+  // identities (no statistics, no albedo estimate), so a quarter of the samples is enough.
+  // These per-sample checks run before the quadrature (they need nothing from it): a model
+  // answered in rounds (a Python object, python/src/replayed_bsdf.h) then knows every value at
+  // the sampled directions when its quadrature runs, and integrates once.
+  const ConsistencyResult consistency =
+      checkConsistency(model, wi, grid, n, seed, DefaultSupportProbes, mode);
+  const size_t nModes = std::max<size_t>(n / 4, std::min<size_t>(n, 10000));
+  std::optional<ConsistencyResult> radiance;
+  std::optional<TransportModesResult> modes;
+  if (transmission) {
+    radiance = checkConsistency(model, wi, grid, nModes, seed, DefaultSupportProbes, TransportMode::Radiance);
+    modes = checkTransportModes(model, wi, nModes, seed);
+  }
+
+  const CellIntegrals<glm::dvec4> integrals =
+      integrateEnergyCells(model, wi, mode, grid, histogram.probes, kitQuadrature(n));
   const std::vector<glm::dvec4>& cells = integrals.values;
   const ChiSquareResult chi = chiSquareVerdict(histogram, pdfPart(cells), grid, n, threshold);
   report.rows.push_back(chiSquareRow(label, "chi2", wiTheta, chi));
   report.rows.push_back(invalidValuesRow(label, wiTheta, histogram, cells));
 
-  // Weights must match eval |cos| / pdf in whichever mode a caller uses: with transmission,
-  // both modes are checked, and how they relate. The second mode's checks are per-sample
-  // identities (no statistics, no albedo estimate), so a quarter of the samples is enough.
-  const ConsistencyResult consistency =
-      checkConsistency(model, wi, grid, n, seed, DefaultSupportProbes, mode);
   report.rows.push_back(consistencyRow(label, transmission ? "consistency (importance)" : "consistency",
                                        wiTheta, consistency, n));
   if (transmission) {
-    const size_t nModes = std::max<size_t>(n / 4, std::min<size_t>(n, 10000));
-    const ConsistencyResult radiance =
-        checkConsistency(model, wi, grid, nModes, seed, DefaultSupportProbes, TransportMode::Radiance);
-    report.rows.push_back(consistencyRow(label, "consistency (radiance)", wiTheta, radiance, nModes));
-    const TransportModesResult modes = checkTransportModes(model, wi, nModes, seed);
+    report.rows.push_back(consistencyRow(label, "consistency (radiance)", wiTheta, *radiance, nModes));
     std::string note = format(
         "%.0f samples: same wo, pdf, lobe; eta = n(wo)/n(wi); radiance weight = importance "
         "weight / eta^2 (max error %.2e)",
-        double(nModes), modes.maxWeightError);
-    if (!modes.firstFailure.empty())
-      note = std::to_string(modes.violations) + " violations, first: " + modes.firstFailure + "; " + note;
-    report.rows.push_back(makeRow(label, "transport modes", wiTheta, modes.maxWeightError,
-                                  ConsistencyTolerance, modes.passed(), note));
+        double(nModes), modes->maxWeightError);
+    if (!modes->firstFailure.empty())
+      note = std::to_string(modes->violations) + " violations, first: " + modes->firstFailure + "; " + note;
+    report.rows.push_back(makeRow(label, "transport modes", wiTheta, modes->maxWeightError,
+                                  ConsistencyTolerance, modes->passed(), note));
   }
 
   const EnergyResult energy = energyFromIntegrals(cells, integrals.errors, histogram);
@@ -316,7 +324,14 @@ CheckReport runNegativeControl(const BsdfModel& model, const BsdfModel* alteredS
   chiOptions.seed = deriveSeed(options.seed, angleIndex);
   chiOptions.threshold = perTestThreshold(options, int(angles.size()));
   chiOptions.quadrature = kitQuadrature(options.samples);
-  const ChiSquareResult r = bsdfChiSquareTest(*broken, wi, chiOptions, energyTransportMode(model));
+  // bsdfChiSquareTest, with the pdf integrated in bulk for a model that answers in bulk.
+  const TransportMode mode = energyTransportMode(model);
+  const SampleHistogram histogram = drawSamples(chiOptions.grid, bsdfDirectionSampler(*broken, wi, mode),
+                                                chiOptions.sampleCount, chiOptions.seed);
+  const std::vector<double> integrals =
+      integratePdfCells(*broken, wi, mode, chiOptions.grid, histogram.probes, chiOptions.quadrature).values;
+  const ChiSquareResult r = chiSquareVerdict(histogram, integrals, chiOptions.grid, chiOptions.sampleCount,
+                                             chiOptions.threshold, chiOptions.minExpected);
   CheckRow row = chiSquareRow(label, test, wiTheta, r);
   // This row passes when the kit rejects the broken sampler.
   row.passed = !r.passed;

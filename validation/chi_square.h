@@ -126,62 +126,85 @@ SampleHistogram drawSamples(const SphericalGrid& grid, const DrawFn& draw, size_
 inline double scalarPart(double v) { return v; }
 template <int N> double scalarPart(const glm::vec<N, double>& v) { return v[0]; }
 
-// Integral of integrand(w) over each cell, w the unit direction. Each cell is split at its
-// probe (the centroid of the samples that landed in it) and at the horizon, so that a lobe
-// narrower than the quadrature's first grid, but where the sampler put samples, is found by
-// the quadrature's initial points. Probes only steer where the quadrature looks; the values
-// are integrals of the integrand alone. Cells are independent, so this is deterministic.
+// The pieces a cell is integrated over, rectangles in (cos theta, phi), in the order their
+// integrals are summed: the cell cut at the horizon and at its probe (the centroid of the samples
+// that landed in it), so that a lobe narrower than the quadrature's first grid, but where the
+// sampler put samples, is found by the quadrature's initial points. Probes only steer where the
+// quadrature looks; the values are integrals of the integrand alone.
 //
 // At a pole, cos(theta) squares the lobe's width: a lobe of angular radius r is r^2 / 2 wide
 // there (a rough dielectric's refracted lobe at normal incidence, (1 - 1/eta) times narrower
 // than its facets, reaches 1e-9), below the finest step adaptive Simpson takes in a whole
 // cell. A pole cell whose probe lies at d from the pole is therefore also cut at 4 d, 16 d,
 // 64 d, ... from it, so that the pieces grow geometrically from the lobe's scale.
-// Returns the integrals and, per cell, the quadrature's own error estimate (quadrature.h
-// QuadratureEstimate), summed over the cell's pieces.
+struct CellPiece {
+  double cosLo, cosHi, phiLo, phiHi;
+};
+struct CellPieces {
+  static constexpr int MaxCosCuts = 40;  // edges, horizon, probe and up to 35 pole cuts (4^35 >> 1/ulp)
+  CellPiece pieces[2 * (MaxCosCuts - 1)];
+  int count = 0;
+};
+inline CellPieces cellPieces(const SphericalGrid& grid, int cell, const Vec2d& probe) {
+  constexpr int MaxCosCuts = CellPieces::MaxCosCuts;
+  const int r = cell / grid.phiBins, c = cell % grid.phiBins;
+  double cosCuts[MaxCosCuts], phiCuts[3] = {grid.phiEdge(c), 0, 0};
+  int nCos = 0, nPhi = 1;
+  const double cosLo = grid.cosThetaEdge(r), cosHi = grid.cosThetaEdge(r + 1), phiHi = grid.phiEdge(c + 1);
+  cosCuts[nCos++] = cosLo;
+  if (cosLo < 0.0 && 0.0 < cosHi) cosCuts[nCos++] = 0.0;
+  if (cosLo < probe.x && probe.x < cosHi && probe.x != 0.0) {
+    cosCuts[nCos++] = probe.x;
+    for (const double pole : {-1.0, 1.0}) {
+      if (pole != (pole > 0 ? cosHi : cosLo)) continue;  // the cell does not reach this pole
+      const double toPole = std::abs(pole - probe.x);
+      for (double step = 4 * toPole; step < cosHi - cosLo && nCos < MaxCosCuts - 1; step *= 4)
+        cosCuts[nCos++] = pole > 0 ? pole - step : pole + step;
+    }
+  }
+  cosCuts[nCos++] = cosHi;
+  std::sort(cosCuts, cosCuts + nCos);
+  if (phiCuts[0] < probe.y && probe.y < phiHi) phiCuts[nPhi++] = probe.y;
+  phiCuts[nPhi++] = phiHi;
+  CellPieces result;
+  for (int i = 0; i + 1 < nCos; ++i)
+    for (int j = 0; j + 1 < nPhi; ++j)
+      result.pieces[result.count++] = {cosCuts[i], cosCuts[i + 1], phiCuts[j], phiCuts[j + 1]};
+  return result;
+}
+
+// Integral of integrand(w) over each cell, w the unit direction, as the sum of the integrals
+// over its pieces (cellPieces; `probes` empty: no probes). Cells are independent, so this is
+// deterministic. Returns the integrals and, per cell, the quadrature's own error estimate
+// (quadrature.h QuadratureEstimate), summed over the cell's pieces.
+// integrateCellsInBatches (batched_quadrature.h) computes the same numbers, asking for the
+// integrand's values a whole level of the quadrature at a time.
+template <typename V> struct CellIntegrals {
+  std::vector<V> values, errors;  // per cell: the integral, the quadrature's error estimate
+  explicit CellIntegrals(int cellCount)
+      : values(size_t(cellCount), V(0.0)), errors(size_t(cellCount), V(0.0)) {}
+};
+
 template <typename Integrand>
 auto integrateCellsWithError(const SphericalGrid& grid, const Integrand& integrand,
                              const std::vector<Vec2d>& probes, const QuadratureOptions& options) {
   using V = decltype(integrand(Vec3d(0, 0, 1)));
-  struct CellIntegrals {
-    std::vector<V> values, errors;
-  } result{std::vector<V>(grid.cellCount(), V(0.0)), std::vector<V>(grid.cellCount(), V(0.0))};
+  CellIntegrals<V> result(grid.cellCount());
   tbb::parallel_for(
       tbb::blocked_range<int>(0, grid.cellCount(), 16), [&](const tbb::blocked_range<int>& range) {
         for (int cell = range.begin(); cell != range.end(); ++cell) {
-          const int r = cell / grid.phiBins, c = cell % grid.phiBins;
-          constexpr int MaxCosCuts = 40;  // edges, horizon, probe and up to 35 pole cuts (4^35 >> 1/ulp)
-          double cosCuts[MaxCosCuts], phiCuts[3] = {grid.phiEdge(c), 0, 0};
-          int nCos = 0, nPhi = 1;
-          const double cosLo = grid.cosThetaEdge(r), cosHi = grid.cosThetaEdge(r + 1),
-                       phiHi = grid.phiEdge(c + 1);
-          const Vec2d probe = probes.empty() ? Vec2d(NAN) : probes[cell];
-          cosCuts[nCos++] = cosLo;
-          if (cosLo < 0.0 && 0.0 < cosHi) cosCuts[nCos++] = 0.0;
-          if (cosLo < probe.x && probe.x < cosHi && probe.x != 0.0) {
-            cosCuts[nCos++] = probe.x;
-            for (const double pole : {-1.0, 1.0}) {
-              if (pole != (pole > 0 ? cosHi : cosLo)) continue;  // the cell does not reach this pole
-              const double toPole = std::abs(pole - probe.x);
-              for (double step = 4 * toPole; step < cosHi - cosLo && nCos < MaxCosCuts - 1; step *= 4)
-                cosCuts[nCos++] = pole > 0 ? pole - step : pole + step;
-            }
-          }
-          cosCuts[nCos++] = cosHi;
-          std::sort(cosCuts, cosCuts + nCos);
-          if (phiCuts[0] < probe.y && probe.y < phiHi) phiCuts[nPhi++] = probe.y;
-          phiCuts[nPhi++] = phiHi;
+          const CellPieces pieces = cellPieces(grid, cell, probes.empty() ? Vec2d(NAN) : probes[cell]);
           V sum = V(0.0), error = V(0.0);
-          for (int i = 0; i + 1 < nCos; ++i)
-            for (int j = 0; j + 1 < nPhi; ++j) {
-              const QuadratureEstimate<V> piece = adaptiveSimpson2DEstimate(
-                  [&](double cosTheta, double phi) {
-                    return integrand(SphericalGrid::direction(cosTheta, phi));
-                  },
-                  cosCuts[i], cosCuts[i + 1], phiCuts[j], phiCuts[j + 1], options);
-              sum = sum + piece.value;
-              error = error + piece.error;
-            }
+          for (int k = 0; k < pieces.count; ++k) {
+            const CellPiece& p = pieces.pieces[k];
+            const QuadratureEstimate<V> piece = adaptiveSimpson2DEstimate(
+                [&](double cosTheta, double phi) {
+                  return integrand(SphericalGrid::direction(cosTheta, phi));
+                },
+                p.cosLo, p.cosHi, p.phiLo, p.phiHi, options);
+            sum = sum + piece.value;
+            error = error + piece.error;
+          }
           result.values[cell] = sum;
           result.errors[cell] = error;
         }

@@ -5,11 +5,13 @@
 #include <vector>
 
 #include "materials/bsdf/bsdf.h"
+#include "validation/batched_quadrature.h"
+#include "validation/bulk_evaluated_bsdf.h"
 #include "validation/chi_square.h"
 
 namespace scatterlab {
 
-// The integrand for bsdfCellIntegrals: x = pdf, yzw = f |cos wo| per channel, in `mode`
+// The integrand of integrateEnergyCells: x = pdf, yzw = f |cos wo| per channel, in `mode`
 // (energyTransportMode(model) for the energy checks: bsdf_sampling.h says why).
 template <typename Model>
 auto bsdfEnergyIntegrand(const Model& model, const Vec3d& wi, TransportMode mode = TransportMode::Radiance) {
@@ -17,6 +19,50 @@ auto bsdfEnergyIntegrand(const Model& model, const Vec3d& wi, TransportMode mode
     const Rgb f = model.eval(wi, wo, mode) * std::abs(wo.z);
     return glm::dvec4(model.pdf(wi, wo, mode), f.x, f.y, f.z);
   };
+}
+
+// integrateCellsWithError of bsdfEnergyIntegrand: (pdf, f |cos wo|) over every cell. A model that
+// is a BulkEvaluatedBsdf is asked for its values a quadrature level at a time
+// (integrateCellsInBatches); the numbers are the same.
+inline CellIntegrals<glm::dvec4> integrateEnergyCells(const BsdfModel& model, const Vec3d& wi,
+                                                      TransportMode mode, const SphericalGrid& grid,
+                                                      const std::vector<Vec2d>& probes,
+                                                      const QuadratureOptions& options) {
+  const auto* bulk = dynamic_cast<const BulkEvaluatedBsdf*>(&model);
+  if (!bulk) return integrateCellsWithError(grid, bsdfEnergyIntegrand(model, wi, mode), probes, options);
+  std::vector<Vec3d> incident;
+  std::vector<Rgb> f;
+  std::vector<double> pdf;
+  const auto evaluate = [&](std::span<const Vec3d> wo, std::span<glm::dvec4> values) {
+    incident.assign(wo.size(), wi);
+    f.resize(wo.size());
+    pdf.resize(wo.size());
+    bulk->evalAndPdf(incident, wo, mode, f, pdf);
+    for (size_t k = 0; k < wo.size(); ++k) {
+      const Rgb fCos = f[k] * std::abs(wo[k].z);  // as bsdfEnergyIntegrand computes it
+      values[k] = glm::dvec4(pdf[k], fCos.x, fCos.y, fCos.z);
+    }
+  };
+  return integrateCellsInBatches<glm::dvec4>(grid, evaluate, probes, options);
+}
+
+// The integral of pdf(wi, wo) over every cell (the chi-square's expected counts alone), in bulk for
+// a BulkEvaluatedBsdf as integrateEnergyCells; the numbers are those of integrateCellsWithError.
+inline CellIntegrals<double> integratePdfCells(const BsdfModel& model, const Vec3d& wi, TransportMode mode,
+                                               const SphericalGrid& grid, const std::vector<Vec2d>& probes,
+                                               const QuadratureOptions& options) {
+  const auto* bulk = dynamic_cast<const BulkEvaluatedBsdf*>(&model);
+  if (!bulk)
+    return integrateCellsWithError(
+        grid, [&](const Vec3d& wo) { return model.pdf(wi, wo, mode); }, probes, options);
+  std::vector<Vec3d> incident;
+  std::vector<Rgb> f;
+  const auto evaluate = [&](std::span<const Vec3d> wo, std::span<double> values) {
+    incident.assign(wo.size(), wi);
+    f.resize(wo.size());
+    bulk->evalAndPdf(incident, wo, mode, f, values);
+  };
+  return integrateCellsInBatches<double>(grid, evaluate, probes, options);
 }
 
 struct EnergyResult {

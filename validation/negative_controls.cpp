@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "materials/core/rng.h"
+#include "validation/bulk_evaluated_bsdf.h"
 
 namespace scatterlab {
 namespace {
@@ -47,7 +48,7 @@ Vec3d balancedSplitNormal(const BsdfModel& model, const Vec3d& wi) {
 // that differs from the sampler's true density. sample() reports the broken pdf and the
 // weight that goes with it, so the result is self-consistent and only the chi-square
 // test can tell that the samples do not follow pdf().
-class BrokenSampler final : public BsdfModel {
+class BrokenSampler : public BsdfModel {
  public:
   BrokenSampler(NegativeControl control, const BsdfModel& model, const BsdfModel& sampler, const Vec3d& wi)
       : control_(control),
@@ -61,19 +62,8 @@ class BrokenSampler final : public BsdfModel {
   }
 
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode) const override {
-    switch (control_) {
-      case NegativeControl::PdfHighOnHalf:
-        return model_.pdf(wi, wo, mode) * (glm::dot(wo, splitNormal_) > 0 ? 1.05 : 1.0);
-      case NegativeControl::MissingJacobian: {
-        // The microfacet half-vector density without its Jacobian dwh/dwo = 1 / (4 |wo.h|).
-        const Vec3d h = wi + wo;
-        const double len = glm::length(h);
-        return len > 0 ? model_.pdf(wi, wo, mode) * 4.0 * std::abs(glm::dot(wo, h / len)) : 0.0;
-      }
-      case NegativeControl::SwappedDirections: return model_.pdf(wo, wi, mode);
-      case NegativeControl::RoughnessMismatch: return model_.pdf(wi, wo, mode);
-    }
-    return 0.0;
+    return control_ == NegativeControl::SwappedDirections ? brokenPdf(wi, wo, model_.pdf(wo, wi, mode))
+                                                          : brokenPdf(wi, wo, model_.pdf(wi, wo, mode));
   }
 
   std::optional<BsdfSample> sample(const Vec3d& wi, double uLobe, const Vec2d& u,
@@ -88,12 +78,59 @@ class BrokenSampler final : public BsdfModel {
 
   LobeFlags flags() const override { return model_.flags(); }
 
- private:
+ protected:
+  // The broken pdf at (wi, wo), given the model's pdf where the control reads it: at (wo, wi) for
+  // the swapped control, at (wi, wo) for the others.
+  double brokenPdf(const Vec3d& wi, const Vec3d& wo, double modelPdf) const {
+    switch (control_) {
+      case NegativeControl::PdfHighOnHalf: return modelPdf * (glm::dot(wo, splitNormal_) > 0 ? 1.05 : 1.0);
+      case NegativeControl::MissingJacobian: {
+        // The microfacet half-vector density without its Jacobian dwh/dwo = 1 / (4 |wo.h|).
+        const Vec3d h = wi + wo;
+        const double len = glm::length(h);
+        return len > 0 ? modelPdf * 4.0 * std::abs(glm::dot(wo, h / len)) : 0.0;
+      }
+      case NegativeControl::SwappedDirections:
+      case NegativeControl::RoughnessMismatch: return modelPdf;
+    }
+    return 0.0;
+  }
+
   NegativeControl control_;
   const BsdfModel& model_;
   const BsdfModel& sampler_;
   Vec3d splitNormal_;  // the boosted half is dot(wo, splitNormal_) > 0
 };
+
+// The broken model of a model that answers in bulk (a BSDF written in Python): it answers in bulk
+// too, with the same values, so that the kit's quadrature of its pdf asks the model a level at a
+// time (energy.h integratePdfCells).
+class BulkBrokenSampler final : public BrokenSampler, public BulkEvaluatedBsdf {
+ public:
+  BulkBrokenSampler(NegativeControl control, const BsdfModel& model, const BulkEvaluatedBsdf& bulk,
+                    const BsdfModel& sampler, const Vec3d& wi)
+      : BrokenSampler(control, model, sampler, wi), bulk_(bulk) {}
+
+  void evalAndPdf(std::span<const Vec3d> wi, std::span<const Vec3d> wo, TransportMode mode, std::span<Rgb> f,
+                  std::span<double> pdf) const override {
+    bulk_.evalAndPdf(wi, wo, mode, f, pdf);
+    if (control_ == NegativeControl::SwappedDirections) {
+      std::vector<Rgb> swappedF(wo.size());
+      bulk_.evalAndPdf(wo, wi, mode, swappedF, pdf);
+    }
+    for (size_t k = 0; k < wo.size(); ++k) pdf[k] = brokenPdf(wi[k], wo[k], pdf[k]);
+  }
+
+ private:
+  const BulkEvaluatedBsdf& bulk_;
+};
+
+std::unique_ptr<BsdfModel> makeBrokenSampler(NegativeControl control, const BsdfModel& model,
+                                             const BsdfModel& sampler, const Vec3d& wi) {
+  if (const auto* bulk = dynamic_cast<const BulkEvaluatedBsdf*>(&model))
+    return std::make_unique<BulkBrokenSampler>(control, model, *bulk, sampler, wi);
+  return std::make_unique<BrokenSampler>(control, model, sampler, wi);
+}
 
 }  // namespace
 
@@ -145,9 +182,9 @@ std::unique_ptr<BsdfModel> makeNegativeControl(NegativeControl control, const Bs
   if (control == NegativeControl::RoughnessMismatch) {
     if (!alteredSampler)
       throw std::invalid_argument("the roughness-mismatch control needs the altered sampler model");
-    return std::make_unique<BrokenSampler>(control, model, *alteredSampler, wi);
+    return makeBrokenSampler(control, model, *alteredSampler, wi);
   }
-  return std::make_unique<BrokenSampler>(control, model, model, wi);
+  return makeBrokenSampler(control, model, model, wi);
 }
 
 }  // namespace scatterlab

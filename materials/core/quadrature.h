@@ -61,8 +61,11 @@ V adaptiveSimpsonStep(const F& f, double a, double b, const V& fa, const V& fm, 
     return left + right + delta / 15.0;
   }
   const double half = 0.5 * tolerance;
-  return adaptiveSimpsonStep(f, a, m, fa, flm, fm, left, half, depth + 1, options, error) +
-         adaptiveSimpsonStep(f, m, b, fm, frm, fb, right, half, depth + 1, options, error);
+  // Left half first, as its own statement: the order in which `error` accumulates is then the
+  // same on every compiler (the operands of an overloaded + are evaluated in an unspecified order,
+  // right first with gcc, left first with clang), and validation/batched_quadrature.h can repeat it.
+  const V leftIntegral = adaptiveSimpsonStep(f, a, m, fa, flm, fm, left, half, depth + 1, options, error);
+  return leftIntegral + adaptiveSimpsonStep(f, m, b, fm, frm, fb, right, half, depth + 1, options, error);
 }
 
 // The inner integrals of adaptiveSimpson2D carry their own error estimates through the outer

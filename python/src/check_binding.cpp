@@ -96,7 +96,11 @@ template <typename Unit> CheckReport replayUnit(const PythonBsdf& object, Replay
 CheckReport checkPythonObject(const PythonBsdf& object, const CheckBsdfOptions& options,
                               bool negativeControls, bool progress) {
   if (options.kit.imageDir) std::filesystem::create_directories(*options.kit.imageDir);
-  ReplayedBsdf model(object.declared());
+  ReplayedBsdf model(object.declared(), [&object](std::span<const Vec3d> wi, std::span<const Vec3d> wo,
+                                                  std::span<Rgb> f, std::span<double> pdf) {
+    py::gil_scoped_acquire acquire;
+    object.evalAndPdf(wi, wo, f, pdf);
+  });
   const std::string& label = options.label;
   const BsdfCheckOptions& kit = options.kit;
   CheckReport report;

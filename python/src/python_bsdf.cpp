@@ -53,6 +53,15 @@ py::array_t<double> columns(const std::vector<Miss>& queries, size_t begin, size
   return array;
 }
 
+// Directions [begin, end) as an (n, 3) array.
+py::array_t<double> directionRows(std::span<const Vec3d> directions, size_t begin, size_t end) {
+  py::array_t<double> array({py::ssize_t(end - begin), py::ssize_t(3)});
+  double* out = array.mutable_data();
+  for (size_t i = begin; i < end; ++i)
+    for (int c = 0; c < 3; ++c) out[3 * (i - begin) + c] = directions[i][c];
+  return array;
+}
+
 bool flag(const py::object& object, const char* name, bool fallback) {
   if (!py::hasattr(object, name)) return fallback;
   const py::object value = object.attr(name);
@@ -95,6 +104,20 @@ void PythonBsdf::answer(ReplayedBsdf& model, const ReplayedBsdf::Misses& misses)
   for (const std::vector<Miss>* evals : misses.evals) answerEvals(model, *evals);
   for (const std::vector<Miss>* pdfs : misses.pdfs) answerPdfs(model, *pdfs);
   for (const std::vector<Miss>* samples : misses.samples) answerSamples(model, *samples);
+}
+
+void PythonBsdf::evalAndPdf(std::span<const Vec3d> wi, std::span<const Vec3d> wo, std::span<Rgb> f,
+                            std::span<double> pdf) const {
+  for (size_t begin = 0; begin < wo.size(); begin += BatchRows) {
+    const size_t end = std::min(wo.size(), begin + BatchRows), n = end - begin;
+    const py::array_t<double> wiRows = directionRows(wi, begin, end), woRows = directionRows(wo, begin, end);
+    const Array fRows = resultRows(object_.attr("eval")(wiRows, woRows), "eval(wi, wo)", n, true);
+    const Array pdfRows = resultRows(object_.attr("pdf")(wiRows, woRows), "pdf(wi, wo)", n, false);
+    for (size_t i = 0; i < n; ++i) {
+      f[begin + i] = rgbAt(fRows, i);
+      pdf[begin + i] = pdfRows.data()[i];
+    }
+  }
 }
 
 void PythonBsdf::answerEvals(ReplayedBsdf& model, const std::vector<Miss>& evals) const {

@@ -4,6 +4,7 @@
 // answers to the kit's queries come in batches (ReplayedBsdf).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -24,6 +25,11 @@ class PythonBsdf {
   // answers in `model`. ValueError naming the method when it returns the wrong shape. The GIL
   // must be held.
   void answer(ReplayedBsdf& model, const ReplayedBsdf::Misses& misses) const;
+
+  // f[k] and pdf[k] of the object at (wi[k], wo[k]) for every k, called in batches of at most
+  // BatchRows rows (the kit's quadratures, ReplayedBsdf). The GIL must be held.
+  void evalAndPdf(std::span<const Vec3d> wi, std::span<const Vec3d> wo, std::span<Rgb> f,
+                  std::span<double> pdf) const;
 
   // Rows per call into Python: large enough that numpy's per-call cost vanishes, small enough
   // that one batch's arrays (about 100 bytes a row) stay near 100 MB.

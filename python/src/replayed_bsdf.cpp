@@ -30,15 +30,17 @@ void addNonEmpty(const std::vector<Miss>& list, std::vector<const std::vector<Mi
   if (!list.empty()) to.push_back(&list);
 }
 
-template <typename Value> Value lookUp(const QueryTable<Value>& table, const Query& q, uint64_t kind,
-                                       std::vector<Miss>& misses, const Value& unknown) {
+}  // namespace
+
+template <typename Value> Value ReplayedBsdf::lookUp(const QueryTable<Value>& table, const Query& q,
+                                                     uint64_t kind, std::vector<Miss>& misses,
+                                                     const Value& unknown) const {
   const QueryKey key = queryKey(q, kind);
   if (const Value* value = table.find(key)) return *value;
   misses.push_back({key, q});
+  if (!missed_.load(std::memory_order_relaxed)) missed_.store(true, std::memory_order_relaxed);
   return unknown;
 }
-
-}  // namespace
 
 QueryKey queryKey(const Query& query, uint64_t kind) {
   // Two lanes with different odd multipliers and rotations (xxHash's round), each finalised by
@@ -54,18 +56,41 @@ QueryKey queryKey(const Query& query, uint64_t kind) {
   return key;
 }
 
+// The kit asks for eval and pdf at the same directions, one after the other, and asks for the
+// second only when the first says the direction matters (consistency.h): a miss of one records
+// the other too, so that both arrive in the same round rather than one round apart.
 Rgb ReplayedBsdf::eval(const Vec3d& wi, const Vec3d& wo, TransportMode) const {
-  return lookUp(evals_, query(wi, wo), EvalQuery, misses_.local().evals, Rgb(0.0));
+  const Query q = query(wi, wo);
+  MissBuffer& misses = misses_.local();
+  const size_t before = misses.evals.size();
+  const Rgb f = lookUp(evals_, q, EvalQuery, misses.evals, Rgb(0.0));
+  if (misses.evals.size() != before) lookUp(pdfs_, q, PdfQuery, misses.pdfs, 0.0);
+  return f;
 }
 
 double ReplayedBsdf::pdf(const Vec3d& wi, const Vec3d& wo, TransportMode) const {
-  return lookUp(pdfs_, query(wi, wo), PdfQuery, misses_.local().pdfs, 0.0);
+  const Query q = query(wi, wo);
+  MissBuffer& misses = misses_.local();
+  const size_t before = misses.pdfs.size();
+  const double p = lookUp(pdfs_, q, PdfQuery, misses.pdfs, 0.0);
+  if (misses.pdfs.size() != before) lookUp(evals_, q, EvalQuery, misses.evals, Rgb(0.0));
+  return p;
 }
 
 std::optional<BsdfSample> ReplayedBsdf::sample(const Vec3d& wi, double uLobe, const Vec2d& u,
                                                TransportMode) const {
   return lookUp(samples_, query(wi, uLobe, u), SampleQuery, misses_.local().samples,
                 std::optional<BsdfSample>());
+}
+
+void ReplayedBsdf::evalAndPdf(std::span<const Vec3d> wi, std::span<const Vec3d> wo, TransportMode,
+                              std::span<Rgb> f, std::span<double> pdf) const {
+  if (missed()) {
+    std::fill(f.begin(), f.end(), Rgb(0.0));
+    std::fill(pdf.begin(), pdf.end(), 0.0);
+    return;
+  }
+  bulk_(wi, wo, f, pdf);
 }
 
 size_t ReplayedBsdf::Misses::size() const { return totalSize(evals) + totalSize(pdfs) + totalSize(samples); }
@@ -89,6 +114,7 @@ void ReplayedBsdf::clearMisses() {
     buffer.pdfs.clear();
     buffer.samples.clear();
   }
+  missed_.store(false, std::memory_order_relaxed);
 }
 
 void ReplayedBsdf::forget() {

@@ -11,8 +11,10 @@
 // That last run saw the object's own value at every query, so its report is exactly the kit's
 // report on the object; earlier runs are discarded. Each round answers at least the first query
 // the true run would make that the tables lacked, so the rounds end; in practice their number is
-// the depth of the kit's longest chain of dependent queries (the quadrature's refinement depth,
-// a few to about twenty).
+// the depth of the kit's longest chain of dependent queries that goes through the tables: three
+// for one incident angle (samples, then the values at the sampled directions, then a clean run),
+// since the quadratures ask the object directly (below); up to about twenty for the negative
+// controls, whose broken models wrap this one and integrate through the tables.
 //
 // Queries are keyed by a 128-bit hash of their arguments' bits (two independent 64-bit lanes;
 // a collision among 10^8 queries has probability about 10^-23). A miss carries its key, so a
@@ -21,13 +23,17 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
 
 #include "materials/bsdf/bsdf.h"
+#include "validation/bulk_evaluated_bsdf.h"
 
 namespace scatterlab::python {
 
@@ -69,11 +75,11 @@ template <typename Value> class QueryTable {
   // Room for `count` more entries without growing while they are inserted (one rehash).
   void reserve(size_t count) {
     size_t capacity = std::max<size_t>(slots_.size(), 1024);
-    while (2 * (size_ + count) > capacity) capacity *= 2;
+    while (overfull(size_ + count, capacity)) capacity *= 2;
     if (capacity > slots_.size()) rehash(capacity);
   }
   void insert(const QueryKey& key, const Value& value) {
-    if (2 * (size_ + 1) > slots_.size()) rehash(slots_.empty() ? 1024 : 2 * slots_.size());
+    if (overfull(size_ + 1, slots_.size())) rehash(slots_.empty() ? 1024 : 2 * slots_.size());
     size_t slot = key.a & mask_;
     while (!(slots_[slot].key == QueryKey{}) && !(slots_[slot].key == key)) slot = (slot + 1) & mask_;
     if (slots_[slot].key == key) return;
@@ -92,6 +98,9 @@ template <typename Value> class QueryTable {
     QueryKey key;  // {0, 0}: empty
     Value value{};
   };
+  // Linear probing stays short up to three quarters full (Knuth: 2.5 probes per lookup that
+  // finds its key, 8.5 per one that does not), and the tables are the replay's largest memory.
+  static bool overfull(size_t entries, size_t capacity) { return 4 * entries > 3 * capacity; }
 
   void rehash(size_t capacity) {
     std::vector<Slot> slots(capacity);
@@ -113,9 +122,16 @@ template <typename Value> class QueryTable {
 
 QueryKey queryKey(const Query& query, uint64_t kind);
 
-class ReplayedBsdf final : public BsdfModel {
+// The kit's quadratures of pdf and f |cos| (the longest chains of dependent queries) do not go
+// through the tables: as a BulkEvaluatedBsdf, the model hands each level of them to the object at
+// once (`bulk`, which takes the GIL), in the run itself. A run that has already missed a value
+// will be repeated, so its quadratures get zeros instead and cost nothing.
+class ReplayedBsdf final : public BsdfModel, public BulkEvaluatedBsdf {
  public:
-  explicit ReplayedBsdf(const DeclaredProperties& declared) : declared_(declared) {}
+  using BulkEvaluation = std::function<void(std::span<const Vec3d> wi, std::span<const Vec3d> wo,
+                                            std::span<Rgb> f, std::span<double> pdf)>;
+  ReplayedBsdf(const DeclaredProperties& declared, BulkEvaluation bulk)
+      : declared_(declared), bulk_(std::move(bulk)) {}
 
   Rgb eval(const Vec3d& wi, const Vec3d& wo, TransportMode mode = TransportMode::Radiance) const override;
   double pdf(const Vec3d& wi, const Vec3d& wo, TransportMode mode = TransportMode::Radiance) const override;
@@ -125,6 +141,8 @@ class ReplayedBsdf final : public BsdfModel {
   bool isLossless() const override { return declared_.lossless; }
   double losslessAccuracy() const override { return declared_.losslessAccuracy; }
   bool isReciprocal() const override { return declared_.reciprocal; }
+  void evalAndPdf(std::span<const Vec3d> wi, std::span<const Vec3d> wo, TransportMode mode, std::span<Rgb> f,
+                  std::span<double> pdf) const override;
 
   // The queries the last run could not answer, as each thread recorded them: views of the
   // threads' buffers, valid until clearMisses(). A query two threads missed comes twice and gets
@@ -136,8 +154,10 @@ class ReplayedBsdf final : public BsdfModel {
   };
   Misses takeMisses();
   // Empties the threads' buffers, keeping their memory for the next run (a fresh allocation of
-  // hundreds of MB costs more in page faults than the run that fills it).
+  // hundreds of MB costs more in page faults than the run that fills it), and starts a new run.
   void clearMisses();
+  // Whether this run has met a value the tables lack.
+  bool missed() const { return missed_.load(std::memory_order_relaxed); }
 
   void answerEval(const Miss& miss, const Rgb& f) { evals_.insert(miss.key, f); }
   void answerPdf(const Miss& miss, double pdf) { pdfs_.insert(miss.key, pdf); }
@@ -154,7 +174,12 @@ class ReplayedBsdf final : public BsdfModel {
     std::vector<Miss> evals, pdfs, samples;
   };
 
+  template <typename Value> Value lookUp(const QueryTable<Value>& table, const Query& q, uint64_t kind,
+                                         std::vector<Miss>& misses, const Value& unknown) const;
+
   DeclaredProperties declared_;
+  BulkEvaluation bulk_;
+  mutable std::atomic<bool> missed_{false};
   QueryTable<Rgb> evals_;
   QueryTable<double> pdfs_;
   QueryTable<std::optional<BsdfSample>> samples_;

@@ -7,6 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+
 #include "integrator/environment_map_file.h"
 #include "integrator/exr_io.h"
 #include "integrator/png_io.h"
@@ -157,6 +161,45 @@ TEST(EnvironmentMapFile, RejectsFilesWithoutColour) {
   const Image image = gradient(8, 4);
   writeExr(path, {{"normal", {"X", "Y", "Z"}, &image}});
   expectMentions(errorOf([&] { readEnvironmentMap(path); }), {path.string(), "normal.X", "R, G and B"});
+}
+
+// A header claiming 16384 x 8192 pixels (2^27) in a file of a few KB: refused from the header,
+// before anything is allocated for the pixels.
+TEST(EnvironmentMapFile, RejectsADataWindowOverTheLimitFromTheHeaderAlone) {
+  const fs::path path = scratchPath("huge-header") += ".exr";
+  {
+    Imf::Header header(16384, 8192);
+    for (const char* channel : {"R", "G", "B"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile file(path.c_str(), header);  // no pixels written: the header and an empty offset table
+  }
+  expectMentions(
+      errorOf([&] { readEnvironmentMap(path); }),
+      {path.string(), "16384 x 8192", "at most 33554432 pixels (8192 x 4096)", "before the pixels"});
+}
+
+// A header attribute declaring 1 GB in a file of a few dozen bytes: refused before OpenEXR would
+// allocate the declared size to read it.
+TEST(EnvironmentMapFile, RejectsAHeaderAttributeLargerThanTheFile) {
+  const fs::path path = scratchPath("huge-attribute") += ".exr";
+  {
+    std::ofstream out(path, std::ios::binary);
+    const unsigned char start[8] = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};  // magic, version 2
+    out.write(reinterpret_cast<const char*>(start), 8);
+    out.write("comments\0string\0", 16);
+    const unsigned char size[4] = {0, 0, 0, 0x40};  // 2^30, little-endian
+    out.write(reinterpret_cast<const char*>(size), 4);
+    out << "a few bytes";
+  }
+  expectMentions(errorOf([&] { readEnvironmentMap(path); }),
+                 {path.string(), "\"comments\" (string) declares 1073741824 bytes, but 11 are left"});
+}
+
+// A caller's lower limit (the fuzz harness's): a 16 x 8 map passes at 128 pixels and is refused at 127.
+TEST(EnvironmentMapFile, ALowerPixelLimitRefusesALargerMap) {
+  const fs::path path = writeMap("limit", render_test::smoothSkyMap(8));
+  EXPECT_EQ(readEnvironmentMap(path, 128).image.width(), 16);
+  expectMentions(errorOf([&] { readEnvironmentMap(path, 127); }),
+                 {path.string(), "16 x 8", "at most 127 pixels,"});
 }
 
 TEST(EnvironmentMapFile, RejectsMapsThatAreNotEquirectangular) {
