@@ -37,11 +37,10 @@ void exrEnvironmentMap(Input data) {
     out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
   }
   try {
-    // A header may claim an image of up to 2^25 pixels: reading it allocates 0.4 GB and building
-    // its tables takes tens of ms, whatever the input's few bytes hold, which held the fuzzer to
-    // 16 executions per second. Up to 2^16 pixels (512 x 128) every code path is the same
-    // (the refusal of a larger window included) at hundreds of times the rate; the full limit's
-    // refusal has its own tests (tests/integrator/environment_map_file_test.cpp).
+    // The reader allows 2^25 pixels: a header claiming that many costs a 0.4 GB image and its
+    // sampling tables for a few bytes of input. Below 2^16 pixels (a 256 x 128 map is half that)
+    // every code path is the same, the refusal of a larger window included; the full limit's
+    // refusal has its own tests (tests/integrator/image_io_test.cpp, EnvironmentMapFile).
     constexpr long FuzzMaxPixels = 1L << 16;
     EnvironmentMapFile map = readEnvironmentMap(file, FuzzMaxPixels);
     const Environment environment = Environment::fromMap(std::move(map.image));
