@@ -12,6 +12,7 @@
 
 #include "app/exit_code.h"
 #include "app/fit_verdict.h"
+#include "app/format_number.h"
 #include "app/json_output.h"
 #include "app/option_values.h"
 #include "app/output_guard.h"
@@ -36,12 +37,6 @@ namespace {
 
 using nlohmann::json;
 using namespace fitting;
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
 
 struct LoadedData {
   std::string label;
@@ -137,7 +132,9 @@ FitOptions fitOptionsOf(const FitCommandOptions& options) {
 }
 
 std::string rangeText(const ParameterEstimate& e) {
-  const auto bound = [](double x) { return std::abs(x) >= 1e300 ? std::string("inf") : format("%g", x); };
+  const auto bound = [](double x) {
+    return std::abs(x) >= 1e300 ? std::string("inf") : formatNumber("%g", x);
+  };
   return "[" + bound(e.lower) + ", " + bound(e.upper) + "]";
 }
 

@@ -1,18 +1,7 @@
 #include "app/fit_verdict.h"
-
-#include <cstdio>
+#include "app/format_number.h"
 
 namespace scatterlab {
-
-namespace {
-
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
-}  // namespace
 
 FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMaterial& written,
                     double maxRelativeError) {
@@ -32,8 +21,8 @@ FitVerdict judgeFit(const fitting::FitResult& result, const fitting::WrittenMate
   for (int c = 0; c < 3; ++c)
     if (!(result.relativeError[c] <= maxRelativeError))
       fail(std::string("relative error of channel ") + "rgb"[c] + " " +
-           format("%.3g", result.relativeError[c]) + " exceeds --max-relative-error " +
-           format("%g", maxRelativeError));
+           formatNumber("%.3g", result.relativeError[c]) + " exceeds --max-relative-error " +
+           formatNumber("%g", maxRelativeError));
   if (result.rankDeficient) {
     std::string directions;
     for (const std::string& d : result.unidentified) directions += (directions.empty() ? "" : "; ") + d;

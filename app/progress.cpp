@@ -1,4 +1,5 @@
 #include "app/progress.h"
+#include "app/format_number.h"
 
 #include <sys/ioctl.h>
 #include <unistd.h>
@@ -25,12 +26,6 @@ int terminalColumns() {
   return 80;
 }
 
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
 }  // namespace
 
 void setProgressMode(ProgressMode m) { mode = m; }
@@ -38,17 +33,17 @@ bool progressIsQuiet() { return mode == ProgressMode::Quiet; }
 
 std::string describeDuration(double seconds) {
   if (!std::isfinite(seconds)) return "forever";
-  if (seconds < 90) return format("%.2g s", seconds);
-  if (seconds < 90 * 60) return format("%.0f min", seconds / 60);
-  if (seconds < 48 * 3600) return format("%.1f h", seconds / 3600);
-  if (seconds < 3 * 365 * 86400.0) return format("%.0f days", seconds / 86400);
-  return format("%.2g years", seconds / (365 * 86400.0));
+  if (seconds < 90) return formatNumber("%.2g s", seconds);
+  if (seconds < 90 * 60) return formatNumber("%.0f min", seconds / 60);
+  if (seconds < 48 * 3600) return formatNumber("%.1f h", seconds / 3600);
+  if (seconds < 3 * 365 * 86400.0) return formatNumber("%.0f days", seconds / 86400);
+  return formatNumber("%.2g years", seconds / (365 * 86400.0));
 }
 
 std::string describeMemory(double bytes) {
-  if (bytes >= 1e9) return format("%.3g GB", bytes / 1e9);
-  if (bytes >= 1e6) return format("%.3g MB", bytes / 1e6);
-  return format("%.3g kB", bytes / 1e3);
+  if (bytes >= 1e9) return formatNumber("%.3g GB", bytes / 1e9);
+  if (bytes >= 1e6) return formatNumber("%.3g MB", bytes / 1e6);
+  return formatNumber("%.3g kB", bytes / 1e3);
 }
 
 void announceWork(const WorkEstimate& estimate) {

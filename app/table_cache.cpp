@@ -12,7 +12,7 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-constexpr const char* ManifestName = "bundle.json";
+constexpr const char* BundleManifestName = "bundle.json";
 constexpr int ManifestFormat = 1;
 
 // A missing, unreadable, oversized or malformed manifest is an empty cache (its tables are
@@ -34,9 +34,9 @@ json readManifest(const fs::path& path) {
 }  // namespace
 
 TableCache::TableCache(fs::path directory)
-    : directory_(std::move(directory)), manifest_(readManifest(directory_ / ManifestName)) {}
+    : directory_(std::move(directory)), manifest_(readManifest(directory_ / BundleManifestName)) {}
 
-fs::path TableCache::manifestPath() const { return directory_ / ManifestName; }
+fs::path TableCache::manifestPath() const { return directory_ / BundleManifestName; }
 
 fs::path TableCache::file(const std::string& name) const { return directory_ / (name + ".binary"); }
 

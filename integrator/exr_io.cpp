@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <system_error>
 
@@ -98,18 +99,34 @@ int32_t littleEndian32(const unsigned char* bytes) {
                  uint32_t(bytes[3]) << 24);
 }
 
+// The value size of each attribute type whose value OpenEXR reads by its layout, whatever size
+// the file declares (the readValueFrom of OpenEXR's Imf*Attribute.cpp, and the types of the file
+// format's documentation). Strings, string and float vectors, previews and unknown types are read
+// at their declared size instead; a channel list is read up to its end marker.
+std::optional<uint64_t> fixedValueSize(const std::string& type) {
+  // clang-format off
+  static const std::map<std::string, uint64_t, std::less<>> sizes = {
+      {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"deepImageState", 1},
+      {"double", 8}, {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1},
+      {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9},
+      {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}};
+  // clang-format on
+  const auto found = sizes.find(type);
+  return found == sizes.end() ? std::nullopt : std::optional<uint64_t>(found->second);
+}
+
 // OpenEXR allocates (and zeroes) each header attribute's value at the size the file declares
 // before it reads it, so a few bytes declaring a 2 GB attribute cost 2 GB. The attributes are
 // walked here first, as OpenEXR's Header::readFrom reads them (the file layout: a 4-byte magic
 // number, a 4-byte version whose bit 12 marks a multi-part file; then per part the attributes
 // "name\0type\0", each text at most 255 bytes, a 4-byte little-endian size and the value; a header
 // ends in an empty name, and a multi-part file's list of headers in an empty header), and a size
-// beyond the bytes left in the file is refused. (OpenEXR reads a known type by its structure, a
-// channel list up to its end marker, so after a size field that lies the two walks may part; a
-// valid file's sizes are exact.) OpenEXR also sizes buffers from the data window
-// as it opens the file, so a "dataWindow" attribute is checked here too (with `maxPixels`; none:
-// no pixel limit, as for readExrChannelNames). What OpenEXR itself refuses (no magic number, a
-// text without its 0) is left to it.
+// beyond the bytes left in the file is refused. So that this walk and OpenEXR's stay in step, a
+// value OpenEXR reads by its layout must be the size it declares: a fixed-size type's size
+// (fixedValueSize) and a channel list's entries ("name\0" and 16 bytes each, then a 0). OpenEXR
+// also sizes buffers from the data window as it opens the file, so a "dataWindow" attribute is
+// checked here too (with `maxPixels`; none: no pixel limit, as for readExrChannelNames). What
+// OpenEXR itself refuses (no magic number, a text without its 0) is left to it.
 void checkHeader(const std::filesystem::path& path, const std::string& name, std::optional<long> maxPixels) {
   std::ifstream in(path, std::ios::binary);
   std::error_code error;
@@ -143,13 +160,26 @@ void checkHeader(const std::filesystem::path& path, const std::string& name, std
     if (!readText(type) || !in.read(reinterpret_cast<char*>(size), 4)) return;
     const uint64_t declared = uint32_t(littleEndian32(size));
     const uint64_t at = uint64_t(in.tellg());
+    const std::string what = name + ": header attribute \"" + attribute + "\" (" + type + ") declares " +
+                             std::to_string(littleEndian32(size)) + " bytes";
     if (declared > fileSize - std::min<uint64_t>(at, fileSize))
-      throw RenderInputError(name + ": header attribute \"" + attribute + "\" (" + type + ") declares " +
-                             std::to_string(littleEndian32(size)) + " bytes, but " +
-                             std::to_string(fileSize - at) +
+      throw RenderInputError(what + ", but " + std::to_string(fileSize - at) +
                              " are left in the file; allowed: an OpenEXR file whose attributes fit in it");
+    if (const auto fixed = fixedValueSize(type); fixed && declared != *fixed)
+      throw RenderInputError(what + "; allowed: " + std::to_string(*fixed) + ", the size of a " + type +
+                             " value");
+    if (type == "chlist") {
+      std::string channel;
+      while (readText(channel) && !channel.empty()) in.seekg(16, std::ios::cur);
+      const uint64_t used = uint64_t(in.tellg());
+      if (!in || used - at != declared)
+        throw RenderInputError(what + ", but its channel list takes " +
+                               (in ? std::to_string(used - at) : std::string("more than the file")) +
+                               "; allowed: a channel list of the size it declares");
+      continue;
+    }
     unsigned char box[16];
-    if (maxPixels && attribute == "dataWindow" && type == "box2i" && declared == 16 &&
+    if (maxPixels && attribute == "dataWindow" && type == "box2i" &&
         in.read(reinterpret_cast<char*>(box), 16)) {
       // xMin, yMin, xMax, yMax
       checkDataWindow(name, long(littleEndian32(box + 8)) - littleEndian32(box) + 1,

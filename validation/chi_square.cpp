@@ -12,7 +12,8 @@ namespace detail {
 
 const char* checkDirectionSample(const DirectionSample& s) {
   if (!isFinite(s.w)) return "non-finite direction";
-  if (std::abs(glm::length(s.w) - 1.0) > UnitLengthTolerance) return "direction is not unit length";
+  if (std::abs(glm::length(s.w) - 1.0) > SampledDirectionUnitLengthTolerance)
+    return "direction is not unit length";
   if (!std::isfinite(s.pdf) || s.pdf <= 0.0) return "pdf of a drawn sample is not finite and positive";
   if (s.isDelta && s.pdf > 1.0 + 1e-12) return "discrete probability of a delta sample exceeds 1";
   return nullptr;

@@ -60,8 +60,10 @@ struct SampleHistogram {
 // Two delta samples are the same direction if they agree to this (they come from the same
 // closed-form reflection/refraction of the same wi).
 inline constexpr double DeltaDirectionTolerance = 1e-9;
-// |w| must be 1 within this to count as a direction.
-inline constexpr double UnitLengthTolerance = 1e-6;
+// A sampled direction's |w| must be 1 within this to count as a direction (tighter than the
+// 1e-5 that materials/bsdf/direction_pairs.h allows a direction typed by a person: a sampler
+// normalises its output).
+inline constexpr double SampledDirectionUnitLengthTolerance = 1e-6;
 
 namespace detail {
 // Coordinates are accumulated in 32.32 fixed point so that sums are exact integers and

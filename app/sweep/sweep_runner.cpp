@@ -29,7 +29,7 @@ using nlohmann::json;
 
 namespace {
 
-constexpr const char* ManifestName = "sweep.json";
+constexpr const char* SweepManifestName = "sweep.json";
 constexpr const char* Generator = "scatterlab sweep";
 
 std::string hostName() {
@@ -204,7 +204,7 @@ json sweepManifest(const SweepSpec& sweep) {
 
 void prepareSweepDirectory(const SweepSpec& sweep, const fs::path& directory) {
   std::error_code error;
-  const fs::path manifest = directory / ManifestName;
+  const fs::path manifest = directory / SweepManifestName;
   if (fs::exists(directory, error)) {
     if (!fs::is_directory(directory, error))
       throw InputError("--out " + directory.string() + ": exists and is not a directory");

@@ -21,7 +21,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace adjoint_agreement_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -72,7 +72,7 @@ void report(const std::string& what, const EstimatorPair& pair) {
             << " dof " << pair.worst.dof << " p " << pair.worst.pValue << "; " << pair.largest << "\n";
 }
 
-class AdjointAgreement : public testing::TestWithParam<AdjointCase> {};
+class AdjointAgreement : public ::testing::TestWithParam<AdjointCase> {};
 
 TEST_P(AdjointAgreement, PathLightAndBdptAgree) {
   const json& material = GetParam().material;
@@ -91,8 +91,8 @@ TEST_P(AdjointAgreement, PathLightAndBdptAgree) {
   }
 }
 
-std::string caseName(const testing::TestParamInfo<AdjointCase>& info) { return info.param.name; }
-INSTANTIATE_TEST_SUITE_P(Grid, AdjointAgreement, testing::ValuesIn(registryCases()), caseName);
+std::string caseName(const ::testing::TestParamInfo<AdjointCase>& info) { return info.param.name; }
+INSTANTIATE_TEST_SUITE_P(Grid, AdjointAgreement, ::testing::ValuesIn(registryCases()), caseName);
 
 // ---- Negative controls: models whose importance mode is wrong.
 
@@ -161,7 +161,7 @@ Scene skyScene(double sunDegrees) {
   return scene;
 }
 
-class LightsAtInfinity : public testing::TestWithParam<SkyCase> {};
+class LightsAtInfinity : public ::testing::TestWithParam<SkyCase> {};
 
 TEST_P(LightsAtInfinity, PathLightAndBdptAgree) {
   const Scene scene = skyScene(GetParam().sunDegrees);
@@ -183,10 +183,10 @@ TEST_P(LightsAtInfinity, PathLightAndBdptAgree) {
   }
 }
 
-std::string skyName(const testing::TestParamInfo<SkyCase>& info) { return info.param.name; }
+std::string skyName(const ::testing::TestParamInfo<SkyCase>& info) { return info.param.name; }
 INSTANTIATE_TEST_SUITE_P(Grid, LightsAtInfinity,
-                         testing::Values(SkyCase{"sky_map_sphere_light_and_sun", 10.0},
-                                         SkyCase{"sky_map_sphere_light_and_delta_sun", 0.0}),
+                         ::testing::Values(SkyCase{"sky_map_sphere_light_and_sun", 10.0},
+                                           SkyCase{"sky_map_sphere_light_and_delta_sun", 0.0}),
                          skyName);
 
 struct ControlCase {
@@ -197,7 +197,7 @@ struct ControlCase {
 };
 void PrintTo(const ControlCase& c, std::ostream* out) { *out << c.name; }
 
-class AdjointControl : public testing::TestWithParam<ControlCase> {};
+class AdjointControl : public ::testing::TestWithParam<ControlCase> {};
 
 TEST_P(AdjointControl, IsRejected) {
   const ControlCase& c = GetParam();
@@ -206,19 +206,19 @@ TEST_P(AdjointControl, IsRejected) {
   }));
 }
 
-std::string controlName(const testing::TestParamInfo<ControlCase>& info) { return info.param.name; }
+std::string controlName(const ::testing::TestParamInfo<ControlCase>& info) { return info.param.name; }
 // The 1/eta^2 rule in importance mode, on rough glass: light tracing enters and leaves a sphere
 // lit from outside in importance mode and the two scalings cancel; the light inside the sphere
 // (comparison 5) sees it. And importance 5% brighter than radiance, on the registry's first
 // model (Lambertian).
 INSTANTIATE_TEST_SUITE_P(
     Controls, AdjointControl,
-    testing::Values(ControlCase{"radiance_rule_in_importance_mode",
-                                {{"type", "rough-dielectric"}, {"alpha", 0.3}, {"eta", 1.5}},
-                                true,
-                                1.0},
-                    ControlCase{"importance_five_percent_brighter", {{"type", "lambertian"}}, false, 1.05}),
+    ::testing::Values(ControlCase{"radiance_rule_in_importance_mode",
+                                  {{"type", "rough-dielectric"}, {"alpha", 0.3}, {"eta", 1.5}},
+                                  true,
+                                  1.0},
+                      ControlCase{"importance_five_percent_brighter", {{"type", "lambertian"}}, false, 1.05}),
     controlName);
 
-}  // namespace
+}  // namespace adjoint_agreement_test
 }  // namespace scatterlab

@@ -11,7 +11,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace check_validation_count_test {
 
 // Runs `check` in this process with a small kit (its verdict is not the point here) and
 // returns how many validations it made.
@@ -41,5 +41,5 @@ TEST(CheckValidatesOnce, ASubsurfaceMaterial) {
   EXPECT_EQ(validationsOfCheck(R"({"type": "subsurface", "profile": "burley"})", false), 1u);
 }
 
-}  // namespace
+}  // namespace check_validation_count_test
 }  // namespace scatterlab

@@ -20,7 +20,7 @@
 #include "cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -108,7 +108,7 @@ struct BadInput {
 
 void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.what; }
 
-class CliBadInputTest : public testing::TestWithParam<BadInput> {};
+class CliBadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInputTest, ExitsTwoWithOneMessageAndWritesNothing) {
   const BadInput& bad = GetParam();
@@ -125,7 +125,7 @@ TEST_P(CliBadInputTest, ExitsTwoWithOneMessageAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cli, CliBadInputTest,
-    testing::Values(
+    ::testing::Values(
         BadInput{"negative_roughness",
                  {"check", R"({"type":"conductor","alpha":-0.1})"},
                  {"\"alpha\"", "-0.1", "[0.001, 1]"}},
@@ -171,7 +171,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"azimuth_nan", {"check", "--wi-phi", "nan"}, {"--wi-phi", "\"nan\"", "finite"}},
         BadInput{"seed_negative", {"check", "--seed", "-1"}, {"--seed", "\"-1\"", "integer >= 0"}},
         BadInput{"unknown_option", {"check", "--colour"}, {"--colour"}}),
-    [](const testing::TestParamInfo<BadInput>& info) { return std::string(info.param.what); });
+    [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.what); });
 
 TEST(Cli, ImagesPathThatIsAFileIsBadInput) {
   const fs::path file = uniquePath("not-a-directory");
@@ -252,5 +252,5 @@ TEST(Cli, ImagesAreWrittenOnRequest) {
   fs::remove_all(images);
 }
 
-}  // namespace
+}  // namespace cli_test
 }  // namespace scatterlab

@@ -11,7 +11,7 @@
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
-namespace {
+namespace consistency_cli_test {
 
 using namespace cli_runner;
 
@@ -72,5 +72,5 @@ TEST(Consistency, ATinyRenderSaysWhyItsSphereHasNoMean) {
   expectMentions(run.out, {"sphere mean undefined at 1x1", "near the silhouette count for neither"});
 }
 
-}  // namespace
+}  // namespace consistency_cli_test
 }  // namespace scatterlab

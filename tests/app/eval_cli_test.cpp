@@ -18,7 +18,7 @@
 #include "materials/registry/model_list.h"
 
 namespace scatterlab {
-namespace {
+namespace eval_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -223,11 +223,11 @@ TEST_F(EvalCliBadInput, Materials) {
   expectBadInput({"eval"}, {"material"});
 }
 
-}  // namespace
+}  // namespace eval_cli_test
 }  // namespace scatterlab
 
 namespace scatterlab {
-namespace {
+namespace eval_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -269,5 +269,5 @@ TEST(EvalCli, RglFilesReproduceTheReferenceReadersValues) {
   }
 }
 
-}  // namespace
+}  // namespace eval_cli_test
 }  // namespace scatterlab

@@ -13,7 +13,7 @@
 #include "materials/registry/model_list.h"
 
 namespace scatterlab {
-namespace {
+namespace eval_samples_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -124,5 +124,5 @@ TEST(EvalSamplesCli, SamplesWithDirectionsOrAnglesIsRefused) {
       {"--samples and --directions both given"});
 }
 
-}  // namespace
+}  // namespace eval_samples_cli_test
 }  // namespace scatterlab

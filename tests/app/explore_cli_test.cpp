@@ -16,7 +16,7 @@
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
-namespace {
+namespace explore_cli_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -135,5 +135,5 @@ TEST(ExploreCli, ASecondExplorerReplacesTheFirst) {
   EXPECT_TRUE(assignedJson(readFile(out / "assets" / "preload.js"))["materials"].empty());
 }
 
-}  // namespace
+}  // namespace explore_cli_test
 }  // namespace scatterlab

@@ -16,7 +16,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace fit_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -255,5 +255,5 @@ TEST(FitCli, TableWithoutValidCellsIsBadInput) {
   fs::remove(table);
 }
 
-}  // namespace
+}  // namespace fit_cli_test
 }  // namespace scatterlab

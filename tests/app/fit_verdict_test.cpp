@@ -11,7 +11,7 @@
 #include "fitting/material_writer.h"
 
 namespace scatterlab {
-namespace {
+namespace fit_verdict_test {
 
 // A converged result with small errors, and a material the registry accepts.
 fitting::FitResult soundResult() {
@@ -35,5 +35,5 @@ TEST(FitVerdict, ResidualsThatAreNotFiniteMakeTheFitPoorAndSaySoFirst) {
       << verdict.problems.front();
 }
 
-}  // namespace
+}  // namespace fit_verdict_test
 }  // namespace scatterlab

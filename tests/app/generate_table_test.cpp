@@ -10,7 +10,7 @@
 #include "materials/bsdf/white_microfacet_albedo.h"
 
 namespace scatterlab {
-namespace {
+namespace generate_table_test {
 
 using namespace cli_runner;
 
@@ -46,5 +46,5 @@ TEST(GenerateTable, RefusesUnwritableOutputsBeforeComputing) {
                  {"--out", "ends in '/'"});
 }
 
-}  // namespace
+}  // namespace generate_table_test
 }  // namespace scatterlab

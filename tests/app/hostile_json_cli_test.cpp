@@ -9,7 +9,7 @@
 #include "cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace hostile_json_cli_test {
 
 using namespace cli_runner;
 
@@ -89,5 +89,5 @@ TEST(HostileJson, BracketsInsideStringsDoNotCount) {
                  {"\"note\"", "is not a key of model"});
 }
 
-}  // namespace
+}  // namespace hostile_json_cli_test
 }  // namespace scatterlab

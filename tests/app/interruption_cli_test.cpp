@@ -14,7 +14,7 @@
 #include "cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace interruption_cli_test {
 
 using namespace cli_runner;
 
@@ -157,5 +157,5 @@ TEST(Interruption, ASecondLabIntoTheSameDirectoryIsRefused) {
   EXPECT_EQ(entriesWith(out.parent_path(), ".report."), std::vector<std::string>{});
 }
 
-}  // namespace
+}  // namespace interruption_cli_test
 }  // namespace scatterlab

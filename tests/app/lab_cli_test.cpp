@@ -15,7 +15,7 @@
 #include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
-namespace {
+namespace lab_cli_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -164,5 +164,5 @@ TEST(LabCli, EveryMaterialGoesToTheRenderer) {
   }
 }
 
-}  // namespace
+}  // namespace lab_cli_test
 }  // namespace scatterlab

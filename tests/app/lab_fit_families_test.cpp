@@ -11,7 +11,7 @@
 #include "fitting/material_writer.h"
 
 namespace scatterlab {
-namespace {
+namespace lab_fit_families_test {
 
 using namespace fitting;
 using namespace fitting::test;
@@ -58,5 +58,5 @@ TEST(LabFitFamilies, LambertianBesideBlinnPhongIsRankDeficientAndPoor) {
   EXPECT_TRUE(named) << "no rank-deficiency problem among " << verdict.problems.size();
 }
 
-}  // namespace
+}  // namespace lab_fit_families_test
 }  // namespace scatterlab

@@ -22,7 +22,7 @@
 #include "tests/validation/test_models.h"
 
 namespace scatterlab {
-namespace {
+namespace lab_renders_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -121,7 +121,8 @@ TEST(LabRenders, DroppedSamplesAreCountedAndShownInARedBox) {
   const fs::path dir = freshDir("lab-renders-dropped");
   const SphereSceneFactory broken = [](const json&, const Environment& environment, int size) {
     return makePresetScene(ScenePreset::MaterialSphere,
-                           std::make_unique<testing::FaultyWeightLambertian>(1.0), environment, size, size);
+                           std::make_unique<test_models::FaultyWeightLambertian>(1.0), environment, size,
+                           size);
   };
   const LabSettings settings = tinyRenders();
   const ReportSection section =
@@ -152,7 +153,7 @@ TEST(LabRenders, DroppedSamplesOfThePreviewAreCountedAndShownInTheRedBox) {
   const fs::path dir = freshDir("lab-renders-preview-dropped");
   const PreviewSceneFactory brokenPreview = [](const json&, const Environment& environment, int width,
                                                int height) {
-    return makePresetScene(ScenePreset::Preview, std::make_unique<testing::FaultyWeightLambertian>(1.0),
+    return makePresetScene(ScenePreset::Preview, std::make_unique<test_models::FaultyWeightLambertian>(1.0),
                            environment, width, height);
   };
   const ReportSection section = rendersSection(lambertian(0.5), nullptr, tinyRenders(), furnace(), dir, {},
@@ -237,5 +238,5 @@ TEST(LabRenders, AnUnreadableEnvironmentMapNamesTheFile) {
   }
 }
 
-}  // namespace
+}  // namespace lab_renders_test
 }  // namespace scatterlab

@@ -14,7 +14,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace lab_report_curves_test {
 
 using nlohmann::json;
 
@@ -140,5 +140,5 @@ TEST(MeasuredSlice, ImageHasCellPixelsPerCellAndTheBrightestCellsScale) {
   EXPECT_EQ(be32(20), 180);
 }
 
-}  // namespace
+}  // namespace lab_report_curves_test
 }  // namespace scatterlab

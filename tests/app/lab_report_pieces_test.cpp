@@ -14,7 +14,7 @@
 #include "app/lab/report_page.h"
 
 namespace scatterlab {
-namespace {
+namespace lab_report_pieces_test {
 
 using nlohmann::json;
 
@@ -161,5 +161,5 @@ TEST(ReportPage, SummaryRowPerMaterialAndFailuresMarked) {
   EXPECT_LT(page.find("assets/chart.umd.min.js"), page.find("assets/report.js"));
 }
 
-}  // namespace
+}  // namespace lab_report_pieces_test
 }  // namespace scatterlab

@@ -15,7 +15,7 @@
 #include "cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace lab_staged_directory_test {
 
 namespace fs = std::filesystem;
 using cli_runner::readFile;
@@ -177,5 +177,5 @@ TEST(StagedDirectory, RefusesADirectoryHoldingAnInput) {
   EXPECT_EQ(readFile(target / "gold.json"), "{}");
 }
 
-}  // namespace
+}  // namespace lab_staged_directory_test
 }  // namespace scatterlab

@@ -19,7 +19,7 @@
 #include "materials/measured/tabulated_brdf.h"
 
 namespace scatterlab {
-namespace {
+namespace measured_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -102,5 +102,5 @@ TEST(MeasuredCli, SynthAndFitTellBarePathsByContent) {
   fs::remove(material);
 }
 
-}  // namespace
+}  // namespace measured_cli_test
 }  // namespace scatterlab

@@ -11,7 +11,7 @@
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
-namespace {
+namespace messages_cli_test {
 
 using namespace cli_runner;
 
@@ -139,5 +139,5 @@ TEST(Messages, ProfileValuesThatWouldNotBeFiniteAreRefused) {
   }
 }
 
-}  // namespace
+}  // namespace messages_cli_test
 }  // namespace scatterlab

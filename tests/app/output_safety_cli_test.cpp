@@ -14,7 +14,7 @@
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
-namespace {
+namespace output_safety_cli_test {
 
 using namespace cli_runner;
 
@@ -132,5 +132,5 @@ TEST(LabManifest, ADirectoryWithAForeignFileIsNotReplaced) {
   EXPECT_EQ(readFile(out / "notes.txt"), "mine");
 }
 
-}  // namespace
+}  // namespace output_safety_cli_test
 }  // namespace scatterlab

@@ -17,7 +17,7 @@
 #include "materials/measured/merl_io.h"
 
 namespace scatterlab {
-namespace {
+namespace plugin_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -274,5 +274,5 @@ TEST(PluginCli, ABadLibraryInThePluginPathVariableIsBadInput) {
   expectMentions(run.err, {"SCATTERLAB_PLUGIN_PATH \"/nonexistent/libnothing.so\"", "no such file"});
 }
 
-}  // namespace
+}  // namespace plugin_cli_test
 }  // namespace scatterlab

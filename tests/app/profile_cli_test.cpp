@@ -12,7 +12,7 @@
 #include "tests/test_names.h"
 
 namespace scatterlab {
-namespace {
+namespace profile_cli_test {
 
 using nlohmann::json;
 using namespace cli_runner;
@@ -155,7 +155,7 @@ struct BadProfileRun {
 };
 void PrintTo(const BadProfileRun& b, std::ostream* os) { *os << b.what; }
 
-class BadProfileInput : public testing::TestWithParam<BadProfileRun> {};
+class BadProfileInput : public ::testing::TestWithParam<BadProfileRun> {};
 
 TEST_P(BadProfileInput, ExitsTwoWithAMessage) {
   std::vector<std::string> args{"profile"};
@@ -170,7 +170,7 @@ TEST_P(BadProfileInput, ExitsTwoWithAMessage) {
 
 INSTANTIATE_TEST_SUITE_P(
     ProfileCli, BadProfileInput,
-    testing::Values(
+    ::testing::Values(
         BadProfileRun{"negative coefficients",
                       {R"({"type": "subsurface", "sigma_s": [1, -2, 1], "sigma_a": 0.1})"},
                       {"\"sigma_s\"", "g = -2", ">= 0"}},
@@ -215,7 +215,7 @@ INSTANTIATE_TEST_SUITE_P(
                       {"--max-radius", "--bins"}},
         BadProfileRun{"missing file", {"no-such-material.json"}, {"no-such-material.json", "not found"}},
         BadProfileRun{"no material", {}, {"material"}}),
-    [](const testing::TestParamInfo<BadProfileRun>& info) {
+    [](const ::testing::TestParamInfo<BadProfileRun>& info) {
       return test_names::readableTestName(info.param.what);
     });
 
@@ -272,5 +272,5 @@ TEST(SubsurfaceModelsCli, ListsTheSubsurfaceModelAndItsMedia) {
   EXPECT_TRUE(found);
 }
 
-}  // namespace
+}  // namespace profile_cli_test
 }  // namespace scatterlab

@@ -12,7 +12,7 @@
 #include "cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace render_agreement_cli_test {
 
 using nlohmann::json;
 using namespace cli_runner;
@@ -62,7 +62,7 @@ struct BadSpp {
 };
 void PrintTo(const BadSpp& bad, std::ostream* out) { *out << bad.what; }
 
-class RenderAgreementBadSpp : public testing::TestWithParam<BadSpp> {};
+class RenderAgreementBadSpp : public ::testing::TestWithParam<BadSpp> {};
 
 TEST_P(RenderAgreementBadSpp, IsRefusedNamingTheValueAndTheRange) {
   const ProcessResult run =
@@ -77,11 +77,11 @@ TEST_P(RenderAgreementBadSpp, IsRefusedNamingTheValueAndTheRange) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cli, RenderAgreementBadSpp,
-                         testing::Values(BadSpp{"zero", "0"}, BadSpp{"too_few", "8"},
-                                         BadSpp{"too_many", "1000000"}, BadSpp{"not_a_number", "many"}),
-                         [](const testing::TestParamInfo<BadSpp>& info) {
+                         ::testing::Values(BadSpp{"zero", "0"}, BadSpp{"too_few", "8"},
+                                           BadSpp{"too_many", "1000000"}, BadSpp{"not_a_number", "many"}),
+                         [](const ::testing::TestParamInfo<BadSpp>& info) {
                            return std::string(info.param.what);
                          });
 
-}  // namespace
+}  // namespace render_agreement_cli_test
 }  // namespace scatterlab

@@ -15,7 +15,7 @@
 #include "integrator/render.h"
 
 namespace scatterlab {
-namespace {
+namespace render_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -258,7 +258,7 @@ TEST(RenderCli, SubsurfaceGalleryInBothModes) {
 
 // ---- Bad input ------------------------------------------------------------------------------
 
-class RenderCliBadInput : public testing::Test {
+class RenderCliBadInput : public ::testing::Test {
  protected:
   fs::path prefix = uniquePath("bad");
   std::vector<std::string> with(const std::vector<std::string>& extra) const {
@@ -390,5 +390,5 @@ TEST(RenderResolution, ParsesWidthByHeightOrASide) {
   EXPECT_FALSE(parseResolution("-4x4"));
 }
 
-}  // namespace
+}  // namespace render_cli_test
 }  // namespace scatterlab

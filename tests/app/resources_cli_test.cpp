@@ -14,7 +14,7 @@
 #include "cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace resources_cli_test {
 
 using namespace cli_runner;
 
@@ -90,5 +90,5 @@ TEST(BoundedWork, ProgressLinesReachALogAndQuietSilencesThem) {
   EXPECT_TRUE(run.err.empty()) << run.err;
 }
 
-}  // namespace
+}  // namespace resources_cli_test
 }  // namespace scatterlab

@@ -16,7 +16,7 @@
 #include "tests/app/cli_runner.h"
 
 namespace scatterlab {
-namespace {
+namespace sweep_cli_test {
 
 namespace fs = std::filesystem;
 using cli_runner::describe;
@@ -270,5 +270,5 @@ TEST(SweepCli, ARenderSweepKeepsEachTasksImagesInItsDirectory) {
   EXPECT_EQ(results["tasks"][1]["files"][0], "tasks/000001/render.exr");
 }
 
-}  // namespace
+}  // namespace sweep_cli_test
 }  // namespace scatterlab

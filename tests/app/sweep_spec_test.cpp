@@ -8,7 +8,7 @@
 #include "app/exit_code.h"
 
 namespace scatterlab {
-namespace {
+namespace sweep_spec_test {
 
 using nlohmann::json;
 
@@ -92,5 +92,5 @@ TEST(SweepSpec, ShardsAreRoundRobinAndValidated) {
   EXPECT_THROW(parseSweepShard("-1/3"), InputError);
 }
 
-}  // namespace
+}  // namespace sweep_spec_test
 }  // namespace scatterlab

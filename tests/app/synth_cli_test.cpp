@@ -20,7 +20,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace synth_cli_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -272,5 +272,5 @@ TEST(MeasuredModels, AreListed) {
   expectMentions(run.out, {"measured:", "file", "path", "Matusik"});
 }
 
-}  // namespace
+}  // namespace synth_cli_test
 }  // namespace scatterlab

@@ -10,7 +10,7 @@
 #include "materials/measured/tabulated_brdf.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace brdf_samples_test {
 
 // One full table (1,458,000 cells), shared by the tests of this file: 0.3-0.7 s to make.
 const MerlTable& lambertianTable() {
@@ -93,5 +93,5 @@ TEST(StratifiedSubset, TargetZeroOrLargerThanTheSetKeepsEverything) {
   EXPECT_EQ(stratifiedSubset(all, all.size() + 10, 1).size(), all.size());
 }
 
-}  // namespace
+}  // namespace brdf_samples_test
 }  // namespace scatterlab::fitting::test

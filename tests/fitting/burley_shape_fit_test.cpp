@@ -12,7 +12,7 @@
 #include "validation/half_space_reference.h"
 
 namespace scatterlab::fitting {
-namespace {
+namespace burley_shape_fit_test {
 
 BurleyShapeFit fitWalk(const HalfSpaceWalkSettings& settings, double albedo) {
   const BurleyShapeFit fit = fitBurleyShapeFactor(simulateHalfSpace(settings), albedo);
@@ -141,5 +141,5 @@ TEST(BurleyShapeFit, BadInputIsRefused) {
   EXPECT_THROW(fitBurleyShapeFactor(noAnnuli, 0.5), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace burley_shape_fit_test
 }  // namespace scatterlab::fitting

@@ -15,7 +15,7 @@
 #include "materials/measured/measurement_synthesis.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace conductor_index_test {
 
 constexpr double Bound = 0.01;  // the issue's: alpha and normal-incidence reflectance within 1%
 
@@ -123,5 +123,5 @@ TEST(FittedConductorIndex, IsFittedAlone) {
                                              "conductor.edge_tint.g", "conductor.edge_tint.b"}));
 }
 
-}  // namespace
+}  // namespace conductor_index_test
 }  // namespace scatterlab::fitting::test

@@ -20,7 +20,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace cross_model_test {
 
 struct RegionErrors {
   double highlight = 0, off = 0;
@@ -83,5 +83,5 @@ INSTANTIATE_TEST_SUITE_P(Grid, CrossModel,
                            return name;
                          });
 
-}  // namespace
+}  // namespace cross_model_test
 }  // namespace scatterlab::fitting::test

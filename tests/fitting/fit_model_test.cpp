@@ -7,7 +7,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace fit_model_test {
 
 std::vector<std::string> names(const FitModel& model) {
   std::vector<std::string> out;
@@ -125,5 +125,5 @@ TEST(ModelSpec, EveryFittableModelBuildsFromItsDefaults) {
   }
 }
 
-}  // namespace
+}  // namespace fit_model_test
 }  // namespace scatterlab::fitting::test

@@ -24,7 +24,7 @@
 #include "materials/measured/half_diff.h"
 
 namespace scatterlab::fitting {
-namespace {
+namespace kernel_gradient_test {
 
 constexpr double Precision = 1e-6;
 
@@ -230,5 +230,5 @@ TEST(KernelGradients, Disney) {
   expectGradientsMatch(DisneyKernel{}, smooth, "disney smooth", where);
 }
 
-}  // namespace
+}  // namespace kernel_gradient_test
 }  // namespace scatterlab::fitting

@@ -11,7 +11,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace least_squares_test {
 
 // The raw residuals of a few samples as a Ceres cost function, for the gradient checker. As in
 // kernel_gradient_test.cpp, positive parameters enter as their logarithms (x = exp(u), so
@@ -187,5 +187,5 @@ TEST(BrdfLeastSquares, SameBitsForAnyThreadCount) {
   EXPECT_NEAR(one.cost(x.data()), a.cost, 1e-13 * a.cost);
 }
 
-}  // namespace
+}  // namespace least_squares_test
 }  // namespace scatterlab::fitting::test

@@ -7,7 +7,7 @@
 #include "materials/core/warp.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace material_writer_test {
 
 // Parameters inside their bounds; scales of `scale` per part (times a per-channel factor).
 std::vector<double> pointOf(const FitModel& model, double scale) {
@@ -78,5 +78,5 @@ TEST(MaterialWriter, ScalesAddingUpToMoreThanOneCannotBeWritten) {
   EXPECT_NE(written.problem.find("1.2"), std::string::npos) << written.problem;
 }
 
-}  // namespace
+}  // namespace material_writer_test
 }  // namespace scatterlab::fitting::test

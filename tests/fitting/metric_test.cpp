@@ -6,7 +6,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace metric_test {
 
 // One sample: wi at 30 degrees, wo at 60 degrees, f = (0.5, 1, 2), sampling weight 2.
 BrdfSamples oneSample() {
@@ -99,5 +99,5 @@ TEST(Metric, NamesRoundTripAndUnknownNamesAreRejected) {
   }
 }
 
-}  // namespace
+}  // namespace metric_test
 }  // namespace scatterlab::fitting::test

@@ -16,7 +16,7 @@
 #include "materials/measured/measurement_synthesis.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace noise_coverage_test {
 
 // The chi-square quantile by Wilson & Hilferty 1931: k (1 - 2/(9k) + z sqrt(2/(9k)))^3.
 double chiSquareQuantile(double k, double z) {
@@ -108,5 +108,5 @@ INSTANTIATE_TEST_SUITE_P(Grid, NoiseCoverage,
                          ::testing::Values(MetricCase{Metric::L2}, MetricCase{Metric::Ngan}),
                          [](const auto& info) { return toString(info.param.metric); });
 
-}  // namespace
+}  // namespace noise_coverage_test
 }  // namespace scatterlab::fitting::test

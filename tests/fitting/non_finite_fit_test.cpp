@@ -12,7 +12,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace non_finite_fit_test {
 
 const double NaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -89,5 +89,5 @@ TEST(NonFiniteFit, ResidualsThatAreNotFiniteAtTheResultMarkTheFit) {
   EXPECT_TRUE(j["sigma2"].is_null());
 }
 
-}  // namespace
+}  // namespace non_finite_fit_test
 }  // namespace scatterlab::fitting::test

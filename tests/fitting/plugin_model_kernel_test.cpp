@@ -12,7 +12,7 @@
 #include "materials/bsdf/phong.h"
 
 namespace scatterlab::fitting {
-namespace {
+namespace plugin_model_kernel_test {
 
 // The normalised Phong lobe (materials/bsdf/phong.h, no diffuse term) as a plugin would register
 // it: slots exponent, ks.r, ks.g, ks.b.
@@ -99,5 +99,5 @@ TEST(PluginModelKernel, NumericDerivativesAgreeWithTheKernels) {
   }
 }
 
-}  // namespace
+}  // namespace plugin_model_kernel_test
 }  // namespace scatterlab::fitting

@@ -34,7 +34,7 @@
 #include "materials/bssrdf/photon_beam_diffusion.h"
 
 namespace scatterlab::fitting {
-namespace {
+namespace profile_gradient_test {
 
 constexpr double Precision = 1e-6;
 constexpr double QuadraturePrecision = 1e-5;
@@ -210,5 +210,5 @@ TEST(ProfileGradients, PhotonBeamDiffusion) {
     }
 }
 
-}  // namespace
+}  // namespace profile_gradient_test
 }  // namespace scatterlab::fitting

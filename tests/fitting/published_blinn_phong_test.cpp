@@ -15,7 +15,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace published_blinn_phong_test {
 
 std::map<std::string, double> lobeWidths(const std::string& file, const std::string& key) {
   std::map<std::string, double> out;
@@ -42,5 +42,5 @@ TEST(PublishedBlinnPhong, SharpnessMatchesAHalfVectorLobe) {
   EXPECT_LT(median, 1.5);
 }
 
-}  // namespace
+}  // namespace published_blinn_phong_test
 }  // namespace scatterlab::fitting::test

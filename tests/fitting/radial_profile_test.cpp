@@ -14,7 +14,7 @@
 #include "materials/measured/measurement_synthesis.h"
 
 namespace scatterlab::fitting {
-namespace {
+namespace radial_profile_test {
 
 struct BurleyProfile {
   static constexpr int ParameterCount = 2;  // d (mm), A
@@ -181,5 +181,5 @@ TEST(RadialProfile, BadInputIsRefused) {
   EXPECT_THROW(fitRadialProfile(BurleyProfile{}, r, values, options), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace radial_profile_test
 }  // namespace scatterlab::fitting

@@ -10,7 +10,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace recovery_test {
 
 constexpr double Tolerance = 1e-4;
 
@@ -241,5 +241,5 @@ INSTANTIATE_TEST_SUITE_P(Grid, PublishedRecovery,
                            return name;
                          });
 
-}  // namespace
+}  // namespace recovery_test
 }  // namespace scatterlab::fitting::test

@@ -6,7 +6,7 @@
 #include "fitting_test_support.h"
 
 namespace scatterlab::fitting::test {
-namespace {
+namespace robust_test {
 
 const std::vector<json>& truth() {
   static const std::vector<json> t{
@@ -47,5 +47,5 @@ TEST(RobustLoss, OutliersPullThePlainFitButNotTheRobustOnes) {
   }
 }
 
-}  // namespace
+}  // namespace robust_test
 }  // namespace scatterlab::fitting::test

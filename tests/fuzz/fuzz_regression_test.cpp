@@ -14,7 +14,7 @@
 #include "fuzz/harness/harness.h"
 
 namespace scatterlab::fuzz {
-namespace {
+namespace fuzz_regression_test {
 
 namespace fs = std::filesystem;
 
@@ -33,14 +33,14 @@ std::vector<uint8_t> bytesOf(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-}  // namespace
+}  // namespace fuzz_regression_test
 
 // The harness's name in gtest's messages.
 void PrintTo(const FuzzHarness& harness, std::ostream* out) { *out << harness.name; }
 
-namespace {
+namespace fuzz_regression_test {
 
-class FuzzHarnessInputs : public testing::TestWithParam<FuzzHarness> {};
+class FuzzHarnessInputs : public ::testing::TestWithParam<FuzzHarness> {};
 
 TEST_P(FuzzHarnessInputs, SeedCorpusRunsCleanly) {
   const std::vector<fs::path> seeds = inputsIn(FuzzDir / "corpus" / GetParam().name);
@@ -60,10 +60,10 @@ TEST_P(FuzzHarnessInputs, PastFindingsStayFixed) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Harness, FuzzHarnessInputs, testing::ValuesIn(fuzzHarnesses()),
-                         [](const testing::TestParamInfo<FuzzHarness>& info) {
+INSTANTIATE_TEST_SUITE_P(Harness, FuzzHarnessInputs, ::testing::ValuesIn(fuzzHarnesses()),
+                         [](const ::testing::TestParamInfo<FuzzHarness>& info) {
                            return std::string(info.param.name);
                          });
 
-}  // namespace
+}  // namespace fuzz_regression_test
 }  // namespace scatterlab::fuzz

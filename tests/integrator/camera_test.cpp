@@ -6,7 +6,7 @@
 #include "integrator/scene_presets.h"
 
 namespace scatterlab {
-namespace {
+namespace camera_test {
 
 TEST(PinholeCamera, MatchesThePeersRayFormula) {
   // exr_stats.py: pixel (i, j from the bottom) of a W x H image looks along (X, 1, Y) with
@@ -63,5 +63,5 @@ TEST(Transform, ComposesInvertsAndTransformsNormals) {
   EXPECT_FALSE(Transform::scale(-1.0).uniformScale());  // a mirror
 }
 
-}  // namespace
+}  // namespace camera_test
 }  // namespace scatterlab

@@ -38,7 +38,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace caustic_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -151,7 +151,7 @@ struct CausticCase {
 };
 void PrintTo(const CausticCase& c, std::ostream* out) { *out << c.name; }
 
-class Caustic : public testing::TestWithParam<CausticCase> {};
+class Caustic : public ::testing::TestWithParam<CausticCase> {};
 
 TEST_P(Caustic, EstimatorsAgreeWithThePathTracersReference) {
   const Scene scene = causticScene();
@@ -208,8 +208,8 @@ TEST_P(Caustic, EstimatorsAgreeWithThePathTracersReference) {
       efficiency(squaredError / Runs / sqr(reference.mean), seconds / Runs) / pathEfficiency);
 }
 
-std::string caseName(const testing::TestParamInfo<CausticCase>& info) { return info.param.name; }
-INSTANTIATE_TEST_SUITE_P(Grid, Caustic, testing::Values(CausticCase{"glass_sphere"}), caseName);
+std::string caseName(const ::testing::TestParamInfo<CausticCase>& info) { return info.param.name; }
+INSTANTIATE_TEST_SUITE_P(Grid, Caustic, ::testing::Values(CausticCase{"glass_sphere"}), caseName);
 
-}  // namespace
+}  // namespace caustic_test
 }  // namespace scatterlab

@@ -19,7 +19,7 @@
 #include "render_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace conductor_loss_test {
 
 using namespace render_test;
 
@@ -61,7 +61,7 @@ void PrintTo(const Resolution& c, std::ostream* os) {
   *os << c.size << " x " << c.size << ", " << c.spp << " spp";
 }
 
-class ConductorLoss : public testing::TestWithParam<Resolution> {};
+class ConductorLoss : public ::testing::TestWithParam<Resolution> {};
 
 // At the peers' 256 x 256 and at 64 x 64, where the 3-pixel margin drops more of the rim.
 TEST_P(ConductorLoss, MaskedFurnaceMeanMatchesQuadratureOfTheAlbedo) {
@@ -89,12 +89,12 @@ TEST_P(ConductorLoss, MaskedFurnaceMeanMatchesQuadratureOfTheAlbedo) {
             << cosineWeighted << "; Cycles 0.9818 (256x256)\n";
 }
 
-std::string resolutionName(const testing::TestParamInfo<Resolution>& info) {
+std::string resolutionName(const ::testing::TestParamInfo<Resolution>& info) {
   return "res" + std::to_string(info.param.size);
 }
-INSTANTIATE_TEST_SUITE_P(PeerScene, ConductorLoss, testing::Values(Resolution{64, 256}), resolutionName);
+INSTANTIATE_TEST_SUITE_P(PeerScene, ConductorLoss, ::testing::Values(Resolution{64, 256}), resolutionName);
 // The peers' own resolution: 4 M samples, so the sanitizer run (which skips Grid/) leaves it out.
-INSTANTIATE_TEST_SUITE_P(Grid, ConductorLoss, testing::Values(Resolution{256, 64}), resolutionName);
+INSTANTIATE_TEST_SUITE_P(Grid, ConductorLoss, ::testing::Values(Resolution{256, 64}), resolutionName);
 
-}  // namespace
+}  // namespace conductor_loss_test
 }  // namespace scatterlab

@@ -7,7 +7,7 @@
 #include "integrator/contact_sheet.h"
 
 namespace scatterlab {
-namespace {
+namespace contact_sheet_test {
 
 // The number of pixels of the sheet's rectangle [x0, x1) x [y0, y1) drawn in ink.
 int inkIn(const Image& image, int x0, int y0, int x1, int y1) {
@@ -79,5 +79,5 @@ TEST(ContactSheet, RejectsMixedSizes) {
   EXPECT_THROW(composeContactSheet({}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace contact_sheet_test
 }  // namespace scatterlab

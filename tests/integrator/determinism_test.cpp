@@ -6,7 +6,7 @@
 #include "render_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace determinism_test {
 
 using namespace render_test;
 
@@ -38,5 +38,5 @@ TEST(Determinism, AnotherSeedGivesAnotherImage) {
   EXPECT_NE(a.color.data(), b.color.data());
 }
 
-}  // namespace
+}  // namespace determinism_test
 }  // namespace scatterlab

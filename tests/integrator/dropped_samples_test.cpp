@@ -13,7 +13,7 @@
 #include "tests/validation/test_models.h"
 
 namespace scatterlab {
-namespace {
+namespace dropped_samples_test {
 
 using namespace render_test;
 
@@ -23,7 +23,7 @@ const IntegratorKind SplattingAndPhotonEstimators[] = {IntegratorKind::Light, In
 // A Lambertian whose sampled weight is broken on half of its samples, the way the CLI's test
 // hook breaks every BSDF (integrator/fault_injection.h): NaN, or -1 per channel.
 std::unique_ptr<BsdfModel> faultyLambertian(SampleValue fault) {
-  return std::make_unique<testing::FaultyWeightLambertian>(
+  return std::make_unique<test_models::FaultyWeightLambertian>(
       0.5, fault == SampleValue::NonFinite ? Rgb(std::numeric_limits<double>::quiet_NaN()) : Rgb(-1.0));
 }
 
@@ -72,5 +72,5 @@ TEST(DroppedSamples, NegativeWeightsAreCountedAsNegativeAndReachNoPixel) {
   }
 }
 
-}  // namespace
+}  // namespace dropped_samples_test
 }  // namespace scatterlab

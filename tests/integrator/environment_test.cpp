@@ -10,7 +10,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace environment_test {
 
 using render_test::patchyMap;
 
@@ -166,5 +166,5 @@ TEST(EnvironmentChiSquare, RejectsAMismatchedPdf) {
   EXPECT_FALSE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue;
 }
 
-}  // namespace
+}  // namespace environment_test
 }  // namespace scatterlab

@@ -25,7 +25,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace estimator_agreement_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -68,7 +68,7 @@ struct MaterialCase {
 };
 void PrintTo(const MaterialCase& c, std::ostream* os) { *os << c.name; }
 
-class EstimatorAgreement : public testing::TestWithParam<MaterialCase> {};
+class EstimatorAgreement : public ::testing::TestWithParam<MaterialCase> {};
 
 TEST_P(EstimatorAgreement, BsdfLightAndMisAgree) {
   const json& material = GetParam().material;
@@ -101,17 +101,17 @@ TEST_P(EstimatorAgreement, RejectsAFivePercentBias) {
   }
 }
 
-std::string caseName(const testing::TestParamInfo<MaterialCase>& info) { return info.param.name; }
+std::string caseName(const ::testing::TestParamInfo<MaterialCase>& info) { return info.param.name; }
 INSTANTIATE_TEST_SUITE_P(Materials, EstimatorAgreement,
-                         testing::Values(MaterialCase{
+                         ::testing::Values(MaterialCase{
                              "rough_plastic",
                              {{"type", "rough-plastic"}, {"alpha", 0.25}, {"diffuse", {0.6, 0.3, 0.2}}}}),
                          caseName);
 // Transmission through a rough sphere: long paths, slow under the sanitizers, which skip Grid/.
 INSTANTIATE_TEST_SUITE_P(Grid, EstimatorAgreement,
-                         testing::Values(MaterialCase{
+                         ::testing::Values(MaterialCase{
                              "rough_glass", {{"type", "rough-dielectric"}, {"alpha", 0.3}, {"eta", 1.5}}}),
                          caseName);
 
-}  // namespace
+}  // namespace estimator_agreement_test
 }  // namespace scatterlab

@@ -15,7 +15,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace estimators_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -202,5 +202,5 @@ TEST(Estimators, EmissionCarriesTheLightsPower) {
   EXPECT_NEAR(ray->weight.x, Pi * 3.0 * 4 * Pi * 0.16, 1e-9);
 }
 
-}  // namespace
+}  // namespace estimators_test
 }  // namespace scatterlab

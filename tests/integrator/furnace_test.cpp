@@ -24,7 +24,7 @@
 #include "render_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace furnace_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -65,7 +65,7 @@ bool samplesWeightOne(const BsdfModel& model) {
   return true;
 }
 
-class Furnace : public testing::TestWithParam<LosslessCase> {};
+class Furnace : public ::testing::TestWithParam<LosslessCase> {};
 
 TEST_P(Furnace, EveryPixelIsOne) {
   const LosslessCase& c = GetParam();
@@ -111,8 +111,8 @@ TEST_P(Furnace, EveryPixelIsOne) {
   std::cout << "[ furnace  ] " << c.name << ": mean " << mean << " +- " << error << "\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalog, Furnace, testing::ValuesIn(losslessCatalog()),
-                         [](const testing::TestParamInfo<LosslessCase>& info) {
+INSTANTIATE_TEST_SUITE_P(Catalog, Furnace, ::testing::ValuesIn(losslessCatalog()),
+                         [](const ::testing::TestParamInfo<LosslessCase>& info) {
                            std::string name = info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
@@ -142,5 +142,5 @@ TEST(UniformEnvironment, DiffuseSphereRendersAlbedoTimesColour) {
   EXPECT_GT(sphere, 100);
 }
 
-}  // namespace
+}  // namespace furnace_test
 }  // namespace scatterlab

@@ -18,7 +18,7 @@
 #include "render_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace grazing_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -108,5 +108,5 @@ TEST(Grazing, MeasuredMaterialStaysFinite) {
   fs::remove(file);
 }
 
-}  // namespace
+}  // namespace grazing_test
 }  // namespace scatterlab

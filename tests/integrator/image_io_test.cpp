@@ -4,8 +4,11 @@
 // Writes are atomic: a write that fails leaves nothing behind.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
@@ -18,7 +21,7 @@
 #include "render_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace image_io_test {
 
 namespace fs = std::filesystem;
 using render_test::scratchPath;
@@ -194,6 +197,40 @@ TEST(EnvironmentMapFile, RejectsAHeaderAttributeLargerThanTheFile) {
                  {path.string(), "\"comments\" (string) declares 1073741824 bytes, but 11 are left"});
 }
 
+// A good map whose header attribute `attributeAndType` ("name\0type\0") has its size field set to
+// `size`, as a file whose size fields lie.
+fs::path mapWithAttributeSize(const std::string& stem, const std::string& attributeAndType, uint32_t size) {
+  const fs::path path = writeMap(stem, render_test::smoothSkyMap(8));
+  std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t at = bytes.find(attributeAndType);
+  EXPECT_NE(at, std::string::npos) << "the writer's header has no " << attributeAndType;
+  const unsigned char little[4] = {uint8_t(size), uint8_t(size >> 8), uint8_t(size >> 16),
+                                   uint8_t(size >> 24)};
+  file.seekp(std::streamoff(at + attributeAndType.size()));
+  file.write(reinterpret_cast<const char*>(little), 4);
+  return path;
+}
+
+// OpenEXR reads a fixed-size value by its layout, whatever size is declared, and would then read
+// the next attribute from the wrong place; the walk refuses the size (a float is 4 bytes).
+TEST(EnvironmentMapFile, RejectsAFixedSizeAttributeOfAnotherSize) {
+  const std::string attribute("pixelAspectRatio\0float\0", 23);
+  const fs::path path = mapWithAttributeSize("float-of-8-bytes", attribute, 8);
+  expectMentions(
+      errorOf([&] { readEnvironmentMap(path); }),
+      {path.string(), "\"pixelAspectRatio\" (float) declares 8 bytes; allowed: 4, the size of a float"});
+}
+
+// A channel list is read up to its end marker: R, G and B take 3 x (2 + 16) + 1 = 55 bytes, so a
+// size of 71 is refused.
+TEST(EnvironmentMapFile, RejectsAChannelListOfAnotherSizeThanDeclared) {
+  const std::string attribute("channels\0chlist\0", 16);
+  const fs::path path = mapWithAttributeSize("chlist-of-71-bytes", attribute, 71);
+  expectMentions(errorOf([&] { readEnvironmentMap(path); }),
+                 {path.string(), "\"channels\" (chlist) declares 71 bytes, but its channel list takes 55"});
+}
+
 // A caller's lower limit (the fuzz harness's): a 16 x 8 map passes at 128 pixels and is refused at 127.
 TEST(EnvironmentMapFile, ALowerPixelLimitRefusesALargerMap) {
   const fs::path path = writeMap("limit", render_test::smoothSkyMap(8));
@@ -232,5 +269,5 @@ TEST(EnvironmentMapFile, RejectsNegativeValuesAndClampsRoundOff) {
   EXPECT_EQ(file.image.pixel(4, 2)[1], 0.0f);
 }
 
-}  // namespace
+}  // namespace image_io_test
 }  // namespace scatterlab

@@ -8,7 +8,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace lights_test {
 
 // 4 tests at family-wise 1%.
 const double Threshold = sidakSignificance(0.01, 4);
@@ -122,5 +122,5 @@ TEST(Sun, DeltaSunGivesItsIrradianceAlongItsDirection) {
   EXPECT_THROW(SunLight(Vec3d(0, 0, 1), Rgb(1.0), 90.0), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace lights_test
 }  // namespace scatterlab

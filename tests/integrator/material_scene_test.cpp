@@ -12,7 +12,7 @@
 #include "materials/registry/parameter_spec.h"
 
 namespace scatterlab {
-namespace {
+namespace material_scene_test {
 
 using nlohmann::json;
 
@@ -71,5 +71,5 @@ TEST(MaterialScene, BothKindsRenderOnThePresetSphere) {
     for (int x = 0; x < 8; ++x) EXPECT_TRUE(std::isfinite(walked.color.rgb(x, y).x)) << x << ", " << y;
 }
 
-}  // namespace
+}  // namespace material_scene_test
 }  // namespace scatterlab

@@ -8,7 +8,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace pixel_filter_test {
 
 // 3 tests at family-wise 1%.
 const double Threshold = sidakSignificance(0.01, 3);
@@ -72,5 +72,5 @@ TEST(PixelFilter, RejectsImpossibleParameters) {
   EXPECT_THROW(PixelFilter::gaussian(1.0, 0.5), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace pixel_filter_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "materials/bsdf/lambertian.h"
 
 namespace scatterlab {
-namespace {
+namespace scene_test {
 
 Scene twoShapes() {
   Scene scene;
@@ -123,5 +123,5 @@ TEST(ScenePresets, AreThePeersSceneThePreviewAndTheCaustic) {
   EXPECT_EQ(dark.lightCount(), 1);
 }
 
-}  // namespace
+}  // namespace scene_test
 }  // namespace scatterlab

@@ -8,7 +8,7 @@
 #include "materials/core/warp.h"
 
 namespace scatterlab {
-namespace {
+namespace shapes_test {
 
 TEST(Sphere, HitsFromOutsideAtTheNearRoot) {
   const Sphere sphere{Vec3d(0.0), 1.0};
@@ -108,5 +108,5 @@ TEST(SpawnRay, InternalReflectionsStayOnTheSphere) {
   }
 }
 
-}  // namespace
+}  // namespace shapes_test
 }  // namespace scatterlab

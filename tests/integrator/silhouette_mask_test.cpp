@@ -6,7 +6,7 @@
 #include "integrator/silhouette_mask.h"
 
 namespace scatterlab {
-namespace {
+namespace silhouette_mask_test {
 
 TEST(SilhouetteMask, IsExrStatsMask) {
   for (const int size : {64, 256}) {
@@ -48,5 +48,5 @@ TEST(SilhouetteMask, StatisticsOfARegion) {
   EXPECT_NEAR(regionStatistics(image, mask, PixelRegion::Background).mean, 7.0, 1e-12);
 }
 
-}  // namespace
+}  // namespace silhouette_mask_test
 }  // namespace scatterlab

@@ -11,7 +11,7 @@
 #include "validation/half_space_reference.h"
 
 namespace scatterlab {
-namespace {
+namespace subsurface_render_test {
 
 using nlohmann::json;
 using namespace render_test;
@@ -187,5 +187,5 @@ TEST(SubsurfaceRender, SameImageForOneAndTwoThreads) {
   }
 }
 
-}  // namespace
+}  // namespace subsurface_render_test
 }  // namespace scatterlab

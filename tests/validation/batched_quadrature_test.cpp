@@ -16,7 +16,7 @@
 #include "validation/energy.h"
 
 namespace scatterlab {
-namespace {
+namespace batched_quadrature_test {
 
 // A peak narrow enough that adaptive Simpson refines many levels around it, on a smooth floor.
 double peaked(double x) { return 0.2 + std::exp(-std::pow((x - 0.3137) / 1e-3, 2)); }
@@ -159,5 +159,5 @@ TEST(BatchedQuadrature, NegativeControlsOfAModelAnsweringInBulkGetTheSameRows) {
   expectSameRows(rows, runNegativeControls(dielectric(), nullptr, "dielectric", smallKit()));
 }
 
-}  // namespace
+}  // namespace batched_quadrature_test
 }  // namespace scatterlab

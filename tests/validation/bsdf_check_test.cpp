@@ -10,7 +10,7 @@
 #include "validation/energy.h"
 
 namespace scatterlab {
-namespace {
+namespace bsdf_check_test {
 
 BsdfCheckOptions quickOptions() {
   BsdfCheckOptions o;
@@ -98,12 +98,13 @@ TEST(BsdfCheck, ColouredLambertianAlbedoIsItsAlbedo) {
 }
 
 TEST(BsdfCheck, MirrorPlusDiffuseMixturePassesWithDeltaLobe) {
-  const CheckReport r = runBsdfChecks(testing::MirrorPlusDiffuse(0.4), "mirror+diffuse", quickOptions());
+  const CheckReport r = runBsdfChecks(test_models::MirrorPlusDiffuse(0.4), "mirror+diffuse", quickOptions());
   EXPECT_TRUE(r.passed()) << formatTable(r);
 }
 
 TEST(BsdfCheck, WrongWeightFailsConsistencyButNotChiSquare) {
-  const CheckReport r = runBsdfChecks(testing::WrongWeightLambertian(1.01), "wrong-weight", quickOptions());
+  const CheckReport r =
+      runBsdfChecks(test_models::WrongWeightLambertian(1.01), "wrong-weight", quickOptions());
   EXPECT_FALSE(r.passed());
   EXPECT_TRUE(r.find("chi2", 60)->passed);
   EXPECT_FALSE(r.find("consistency", 60)->passed);
@@ -116,7 +117,7 @@ TEST(BsdfCheck, NonFiniteWeightsAreCountedAndFailTheirRow) {
   BsdfCheckOptions o = quickOptions();
   o.wiThetaDeg = {30};
   const CheckRow* row = nullptr;
-  const CheckReport broken = runBsdfChecks(testing::FaultyWeightLambertian(0.25), "nan", o);
+  const CheckReport broken = runBsdfChecks(test_models::FaultyWeightLambertian(0.25), "nan", o);
   ASSERT_NE(row = broken.find("invalid values", 30), nullptr);
   EXPECT_FALSE(row->passed);
   EXPECT_NEAR(row->statistic, 0.25 * double(o.samples), 5.0 * std::sqrt(0.25 * 0.75 * double(o.samples)));
@@ -135,7 +136,7 @@ TEST(BsdfCheck, NormalisationCatchesAPdfOffByOnePermille) {
   BsdfCheckOptions o = quickOptions();
   o.wiThetaDeg = {0, 60, 89.9};
   const CheckReport sound = runBsdfChecks(LambertianBsdf(Rgb(0.5)), "sound", o);
-  const CheckReport broken = runBsdfChecks(testing::ScaledPdfLambertian(1.001), "pdf x 1.001", o);
+  const CheckReport broken = runBsdfChecks(test_models::ScaledPdfLambertian(1.001), "pdf x 1.001", o);
   for (const double wi : o.wiThetaDeg) {
     const CheckRow* good = sound.find("normalisation", wi);
     ASSERT_NE(good, nullptr);
@@ -179,10 +180,10 @@ TEST(BsdfCheck, ImagesAreWrittenOnRequest) {
 }
 
 TEST(BsdfCheck, NonReciprocalModelFailsReciprocityRow) {
-  const CheckReport r = runBsdfChecks(testing::NonReciprocalDiffuse(), "non-reciprocal", quickOptions());
+  const CheckReport r = runBsdfChecks(test_models::NonReciprocalDiffuse(), "non-reciprocal", quickOptions());
   EXPECT_FALSE(r.rows.back().passed);
   EXPECT_EQ(r.rows.back().test, "reciprocity");
 }
 
-}  // namespace
+}  // namespace bsdf_check_test
 }  // namespace scatterlab

@@ -12,7 +12,7 @@
 #include "validation/gtest_check.h"
 
 namespace scatterlab {
-namespace {
+namespace check_bsdf_test {
 
 constexpr double Exponent = 30.0;
 const Rgb Ks(0.8);
@@ -151,5 +151,5 @@ TEST(GtestCheck, AFailureMessageIsTheVerdictTable) {
   EXPECT_NE(message.find("verdict: FAIL"), std::string::npos) << message;
 }
 
-}  // namespace
+}  // namespace check_bsdf_test
 }  // namespace scatterlab

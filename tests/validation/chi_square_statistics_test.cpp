@@ -6,7 +6,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace chi_square_statistics_test {
 
 Table2D row(std::initializer_list<double> v) {
   Table2D t(1, int(v.size()));
@@ -96,5 +96,5 @@ TEST(ChiSquareStatistics, SidakCorrection) {
   EXPECT_NEAR(sidakSignificance(0.01, 1000), 0.01 / 1000, 1e-7);
 }
 
-}  // namespace
+}  // namespace chi_square_statistics_test
 }  // namespace scatterlab

@@ -5,7 +5,7 @@
 #include "validation/reciprocity.h"
 
 namespace scatterlab {
-namespace {
+namespace consistency_test {
 
 const SphericalGrid Grid{16, 32};
 
@@ -20,7 +20,7 @@ TEST(Consistency, LambertianIsConsistentAndItsMonteCarloAlbedoIsExact) {
 }
 
 TEST(Consistency, WeightOffByOnePercentFails) {
-  const testing::WrongWeightLambertian model(1.01);
+  const test_models::WrongWeightLambertian model(1.01);
   const ConsistencyResult r = checkConsistency(model, directionFromDegrees(30, 0), Grid, 20000, 3, 1000);
   EXPECT_FALSE(r.passed());
   EXPECT_EQ(r.inconsistentSamples, r.samples);
@@ -31,7 +31,7 @@ TEST(Consistency, WeightOffByOnePercentFails) {
 TEST(Consistency, ReflectanceWhereThePdfIsZeroIsFound) {
   // Half of the hemisphere (wo.y < 0) is reflected but never sampled: about 1/4 of uniform
   // sphere probes land there.
-  const testing::HalfSupportSampler model;
+  const test_models::HalfSupportSampler model;
   const ConsistencyResult r = checkConsistency(model, directionFromDegrees(30, 0), Grid, 20000, 3, 40000);
   EXPECT_FALSE(r.passed());
   EXPECT_NEAR(double(r.supportViolations) / 40000, 0.25, 0.01);
@@ -44,11 +44,11 @@ TEST(Reciprocity, LambertianIsReciprocal) {
 }
 
 TEST(Reciprocity, NonReciprocalModelIsCaught) {
-  const ReciprocityResult r = checkReciprocity(testing::NonReciprocalDiffuse(), 20000, 5);
+  const ReciprocityResult r = checkReciprocity(test_models::NonReciprocalDiffuse(), 20000, 5);
   EXPECT_FALSE(r.passed());
   EXPECT_GT(r.violations, 1000u);
   EXPECT_FALSE(r.worst.empty());
 }
 
-}  // namespace
+}  // namespace consistency_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "validation/bsdf_sampling.h"
 
 namespace scatterlab {
-namespace {
+namespace delta_lobe_test {
 
 ChiSquareOptions options() {
   ChiSquareOptions o;
@@ -18,7 +18,7 @@ ChiSquareOptions options() {
 }
 
 TEST(DeltaLobe, CorrectMixtureOfMirrorAndDiffusePasses) {
-  const testing::MirrorPlusDiffuse model(0.3);
+  const test_models::MirrorPlusDiffuse model(0.3);
   const auto r = bsdfChiSquareTest(model, directionFromDegrees(40, 30), options());
   EXPECT_TRUE(r.passed) << "chi2 " << r.statistic << " dof " << r.dof << " p " << r.pValue << " "
                         << r.failure;
@@ -26,18 +26,18 @@ TEST(DeltaLobe, CorrectMixtureOfMirrorAndDiffusePasses) {
 
 TEST(DeltaLobe, WrongDiscreteProbabilityIsRejected) {
   // The sampler picks the mirror 30% of the time but claims 27%.
-  const testing::MirrorPlusDiffuse model(0.3, 0.27);
+  const test_models::MirrorPlusDiffuse model(0.3, 0.27);
   const auto r = bsdfChiSquareTest(model, directionFromDegrees(40, 30), options());
   EXPECT_FALSE(r.passed);
 }
 
 TEST(DeltaLobe, PureDeltaWithCorrectProbabilityPasses) {
   // All samples in one cell: 0 degrees of freedom; the count itself is checked.
-  const testing::MirrorPlusDiffuse model(1.0);
+  const test_models::MirrorPlusDiffuse model(1.0);
   const auto r = bsdfChiSquareTest(model, directionFromDegrees(60, 10), options());
   EXPECT_TRUE(r.passed) << r.failure;
   EXPECT_EQ(r.dof, 0);
 }
 
-}  // namespace
+}  // namespace delta_lobe_test
 }  // namespace scatterlab

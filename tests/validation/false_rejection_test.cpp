@@ -9,7 +9,7 @@
 #include "validation/seed_study.h"
 
 namespace scatterlab {
-namespace {
+namespace false_rejection_test {
 
 TEST(FalseRejection, RateMatchesSignificanceAndPValuesAreUniform) {
   const LambertianBsdf model(Rgb(0.6));
@@ -25,5 +25,5 @@ TEST(FalseRejection, RateMatchesSignificanceAndPValuesAreUniform) {
       << "KS distance of p-values from uniform";
 }
 
-}  // namespace
+}  // namespace false_rejection_test
 }  // namespace scatterlab

@@ -5,7 +5,7 @@
 #include "validation/heatmap.h"
 
 namespace scatterlab {
-namespace {
+namespace heatmap_test {
 
 TEST(Heatmap, WritesPngOfExpectedSize) {
   const std::filesystem::path dir = std::filesystem::path(SCATTERLAB_TEST_OUTPUT_DIR) / "heatmap";
@@ -38,5 +38,5 @@ TEST(Heatmap, UnwritableDirectoryThrowsInsteadOfCrashing) {
                std::runtime_error);
 }
 
-}  // namespace
+}  // namespace heatmap_test
 }  // namespace scatterlab

@@ -13,7 +13,7 @@
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
-namespace {
+namespace negative_controls_test {
 
 ChiSquareOptions options() {
   ChiSquareOptions o;
@@ -95,5 +95,5 @@ TEST(NegativeControls, SuiteReportsControlsAsRejected) {
   EXPECT_NE(report.rows.back().note.find("not applicable"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace negative_controls_test
 }  // namespace scatterlab

@@ -5,7 +5,7 @@
 #include "validation/planar_chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace planar_chi_square_test {
 
 const double Threshold = sidakSignificance(0.01, 3);
 
@@ -61,5 +61,5 @@ TEST(PlanarChiSquare, CellIndexCoversThePlane) {
   EXPECT_EQ(grid.cellIndex({-0.99, -1e-9}), (grid.rings() - 1) * grid.sectors);
 }
 
-}  // namespace
+}  // namespace planar_chi_square_test
 }  // namespace scatterlab

@@ -11,7 +11,7 @@
 #include "validation/profile_comparison.h"
 
 namespace scatterlab {
-namespace {
+namespace profile_comparison_test {
 
 ScatteringMedium skin1() {
   const MeasuredMedium* m = findMeasuredMedium("Skin1");
@@ -122,5 +122,5 @@ TEST(ProfileComparison, RejectsAnInvalidMedium) {
   EXPECT_THROW(compareProfilesWithWalk(bad, ProfileComparisonOptions{}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace profile_comparison_test
 }  // namespace scatterlab

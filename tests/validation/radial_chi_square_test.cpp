@@ -7,7 +7,7 @@
 #include "validation/radial_chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace radial_chi_square_test {
 
 const double Threshold = sidakSignificance(0.01, 3);
 
@@ -53,5 +53,5 @@ TEST(RadialChiSquare, DensityIntegralsSpanManyDecades) {
   EXPECT_NEAR(integrateRadialDensity(pdf, 0.0, 1.0, 0.0), 0.5, 1e-9);
 }
 
-}  // namespace
+}  // namespace radial_chi_square_test
 }  // namespace scatterlab

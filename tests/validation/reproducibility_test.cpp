@@ -10,7 +10,7 @@
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
-namespace {
+namespace reproducibility_test {
 
 template <typename F> auto withThreads(int threads, const F& f) {
   tbb::task_arena arena(threads);
@@ -56,5 +56,5 @@ TEST(Reproducibility, DifferentSeedsGiveDifferentHistograms) {
   EXPECT_NE(bsdfChiSquareTest(model, wi, a).observed.values, bsdfChiSquareTest(model, wi, b).observed.values);
 }
 
-}  // namespace
+}  // namespace reproducibility_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 
 #include "materials/bsdf/lambertian.h"
 
-namespace scatterlab::testing {
+namespace scatterlab::test_models {
 
 // With probability `mirrorProbability` a perfect mirror (a delta lobe), otherwise a
 // Lambertian lobe: a correct mixture, the shape of a smooth plastic.
@@ -154,4 +154,4 @@ class NonReciprocalDiffuse final : public BsdfModel {
   LambertianBsdf base_{Rgb(0.5)};
 };
 
-}  // namespace scatterlab::testing
+}  // namespace scatterlab::test_models

@@ -15,7 +15,7 @@
 #include "validation/reciprocity.h"
 
 namespace scatterlab {
-namespace {
+namespace transmission_kit_test {
 
 BsdfCheckOptions quickOptions(std::vector<double> angles) {
   BsdfCheckOptions o;
@@ -184,5 +184,5 @@ TEST(TransmissionKit, ReciprocityErrorFloorsAtTheSmallestNormalDouble) {
   EXPECT_EQ(reciprocityError(INFINITY, 1.0), INFINITY);
 }
 
-}  // namespace
+}  // namespace transmission_kit_test
 }  // namespace scatterlab

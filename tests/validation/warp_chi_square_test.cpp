@@ -6,7 +6,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace warp_chi_square_test {
 
 // 6 tests in this file at family-wise 1%.
 const double Threshold = sidakSignificance(0.01, 6);
@@ -85,5 +85,5 @@ TEST(WarpChiSquare, RejectsSamplesOutsideThePdfSupport) {
   EXPECT_FALSE(r.failure.empty());
 }
 
-}  // namespace
+}  // namespace warp_chi_square_test
 }  // namespace scatterlab

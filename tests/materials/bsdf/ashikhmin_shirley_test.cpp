@@ -10,7 +10,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace ashikhmin_shirley_test {
 
 const std::vector<std::pair<Vec3d, Vec3d>>& pairs() {
   static const std::vector<std::pair<Vec3d, Vec3d>> p{
@@ -137,5 +137,5 @@ INSTANTIATE_TEST_SUITE_P(
                     60.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
-}  // namespace
+}  // namespace ashikhmin_shirley_test
 }  // namespace scatterlab

@@ -10,7 +10,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace blend_kit_test {
 
 using nlohmann::json;
 
@@ -102,5 +102,5 @@ INSTANTIATE_TEST_SUITE_P(
                     80.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
-}  // namespace
+}  // namespace blend_kit_test
 }  // namespace scatterlab

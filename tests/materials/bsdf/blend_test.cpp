@@ -21,7 +21,7 @@
 #include "tests/test_names.h"
 
 namespace scatterlab {
-namespace {
+namespace blend_test {
 
 using nlohmann::json;
 
@@ -262,7 +262,7 @@ struct NestedError {
 };
 void PrintTo(const NestedError& e, std::ostream* os) { *os << e.what; }
 
-class BlendRegistryErrors : public testing::TestWithParam<NestedError> {};
+class BlendRegistryErrors : public ::testing::TestWithParam<NestedError> {};
 
 TEST_P(BlendRegistryErrors, NameTheNestedKeyPath) {
   const std::string message = materialErrorOf(GetParam().material);
@@ -282,7 +282,7 @@ json blendOf(json first, json second) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, BlendRegistryErrors,
-    testing::Values(
+    ::testing::Values(
         NestedError{"out of range",
                     blendOf({{"type", "lambertian"}}, {{"type", "conductor"}, {"alpha", 2}}),
                     {"material key \"materials[1].alpha\": 2 is out of range; allowed: ", "[0.001, 1]"}},
@@ -325,7 +325,7 @@ INSTANTIATE_TEST_SUITE_P(
             blendOf({{"type", "dielectric"}, {"eta", 1.5}}, {{"type", "rough-dielectric"}, {"eta", 1.33}}),
             {"material key \"materials\"", "cannot be blended", "interior indices"},
             true}),
-    [](const testing::TestParamInfo<NestedError>& info) {
+    [](const ::testing::TestParamInfo<NestedError>& info) {
       return test_names::readableTestName(info.param.what);
     });
 
@@ -363,5 +363,5 @@ TEST(BlendRegistry, ExampleMaterialBuilds) {
   EXPECT_NE(dynamic_cast<const BlendBsdf*>(model.get()), nullptr);
 }
 
-}  // namespace
+}  // namespace blend_test
 }  // namespace scatterlab

@@ -9,7 +9,7 @@
 #include "materials/bsdf/metals.h"
 
 namespace scatterlab {
-namespace {
+namespace conductor_kit_test {
 
 struct ConductorCase {
   MicrofacetType type;
@@ -120,5 +120,5 @@ INSTANTIATE_TEST_SUITE_P(
       return name(info.param.conductor) + "_wi" + std::to_string(int(info.param.wiTheta));
     });
 
-}  // namespace
+}  // namespace conductor_kit_test
 }  // namespace scatterlab

@@ -13,7 +13,7 @@
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
-namespace {
+namespace conductor_multiscatter_kit_test {
 
 struct Case {
   MicrofacetType type;
@@ -111,5 +111,5 @@ INSTANTIATE_TEST_SUITE_P(Controls, ConductorMultiscatterNegativeControls,
                                   std::to_string(int(info.param.wiTheta));
                          });
 
-}  // namespace
+}  // namespace conductor_multiscatter_kit_test
 }  // namespace scatterlab

@@ -11,7 +11,7 @@
 #include "materials/core/warp.h"
 
 namespace scatterlab {
-namespace {
+namespace conductor_test {
 
 // Gold-like RGB index: strongly coloured Fresnel, so a channel mix-up shows.
 const Rgb GoldEta(0.2, 0.9, 1.4), GoldK(3.9, 2.4, 1.6);
@@ -236,5 +236,5 @@ TEST(MicrofacetConductor, KernelWithJetsMatchesDoubleAndHasFiniteDerivatives) {
   }
 }
 
-}  // namespace
+}  // namespace conductor_test
 }  // namespace scatterlab

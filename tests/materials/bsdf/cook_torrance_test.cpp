@@ -10,7 +10,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace cook_torrance_test {
 
 TEST(NganCookTorrance, MatchesNgansDefinition) {
   const double m = 0.0367, f0 = 0.203;  // alum-bronze, Ngan et al.'s fit
@@ -104,5 +104,5 @@ INSTANTIATE_TEST_SUITE_P(
                     80.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
-}  // namespace
+}  // namespace cook_torrance_test
 }  // namespace scatterlab

@@ -24,7 +24,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace delta_dielectric_test {
 
 using nlohmann::json;
 
@@ -385,5 +385,5 @@ TEST(DeltaDielectricControls, GenericControlsAreReportedNotApplicable) {
   }
 }
 
-}  // namespace
+}  // namespace delta_dielectric_test
 }  // namespace scatterlab

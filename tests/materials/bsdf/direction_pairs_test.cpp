@@ -12,7 +12,7 @@
 #include "materials/bsdf/lambertian.h"
 
 namespace scatterlab {
-namespace {
+namespace direction_pairs_test {
 
 using nlohmann::json;
 
@@ -73,5 +73,5 @@ TEST(DirectionPairs, ValuesAreTheModelsAndTheirJsonRoundTrips) {
   EXPECT_EQ(printed[0]["pdf"].get<double>(), values[0].pdf);
 }
 
-}  // namespace
+}  // namespace direction_pairs_test
 }  // namespace scatterlab

@@ -21,7 +21,7 @@
 #include "materials/bsdf/disney.h"
 
 namespace scatterlab {
-namespace {
+namespace disney_kit_test {
 
 using nlohmann::json;
 
@@ -134,5 +134,5 @@ INSTANTIATE_TEST_SUITE_P(
             70.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
-}  // namespace
+}  // namespace disney_kit_test
 }  // namespace scatterlab

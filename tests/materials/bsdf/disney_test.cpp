@@ -17,7 +17,7 @@
 #include "validation/energy.h"
 
 namespace scatterlab {
-namespace {
+namespace disney_test {
 
 // ---- The reference, written out from the paper ----
 
@@ -398,5 +398,5 @@ TEST(Disney, WhiteBaseAlbedoExceedsOneAsMeasured) {
   EXPECT_NEAR(albedoByQuadrature(*white(1.0), 89.9), 1.5974, 2e-4);
 }
 
-}  // namespace
+}  // namespace disney_test
 }  // namespace scatterlab

@@ -13,7 +13,7 @@
 #include "materials/core/rng.h"
 
 namespace scatterlab {
-namespace {
+namespace eon_test {
 
 // ---- The paper's expressions, with angles (JCGT 2025, eq. 3-10) ----
 
@@ -287,5 +287,5 @@ INSTANTIATE_TEST_SUITE_P(Controls, EonNegativeControls, ::testing::Values(60.0),
                            return "wi" + std::to_string(int(info.param));
                          });
 
-}  // namespace
+}  // namespace eon_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "materials/bsdf/fresnel_moments.h"
 
 namespace scatterlab {
-namespace {
+namespace fresnel_moments_test {
 
 // pbrt-v3's 5th-order fits of the first two moments (src/core/bssrdf.cpp), for light arriving
 // from the side of index eta: our fresnelMoment(k, 1 / eta). Fits, so agreement is to ~2e-3.
@@ -56,5 +56,5 @@ TEST(FresnelMoments, TotalInternalReflectionPartIsExact) {
   EXPECT_THROW(fresnelMoment(-1, 1.5), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace fresnel_moments_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace scatterlab {
-namespace {
+namespace fresnel_test {
 
 using Jet = ceres::Jet<double, 2>;
 
@@ -147,5 +147,5 @@ TEST(FresnelJet, DielectricDerivativesAreFiniteAndCorrect) {
   }
 }
 
-}  // namespace
+}  // namespace fresnel_test
 }  // namespace scatterlab

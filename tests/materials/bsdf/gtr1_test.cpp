@@ -14,7 +14,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace gtr1_test {
 
 // D of a unit normal at polar angle theta (D does not depend on the azimuth).
 double gtr1AtSin2(const Gtr1Distribution<double>& d, double sin2) {
@@ -129,5 +129,5 @@ TEST(Gtr1, ChiSquareRejectsASamplerWithTheWrongAlpha) {
   EXPECT_FALSE(r.passed) << "chi2 " << r.statistic << " p " << r.pValue;
 }
 
-}  // namespace
+}  // namespace gtr1_test
 }  // namespace scatterlab

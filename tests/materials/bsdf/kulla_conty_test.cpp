@@ -19,7 +19,7 @@
 #include "validation/bsdf_check.h"
 
 namespace scatterlab {
-namespace {
+namespace kulla_conty_test {
 
 // A perfect conductor: F = 1 - O(eta / k^2) = 1 to round-off (k -> infinity is the perfect
 // electric conductor, which reflects everything at every angle). The honest white conductor:
@@ -313,5 +313,5 @@ TEST(KullaConty, RegistryOptionBuildsTheCompensatedConductor) {
   }
 }
 
-}  // namespace
+}  // namespace kulla_conty_test
 }  // namespace scatterlab

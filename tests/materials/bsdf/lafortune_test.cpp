@@ -7,7 +7,7 @@
 #include "materials/bsdf/lafortune.h"
 
 namespace scatterlab {
-namespace {
+namespace lafortune_test {
 
 TEST(Lafortune, RawLobeMatchesLafortune1997Eq4) {
   const LafortuneBsdf model(Rgb(0.1), {LafortuneLobe{Rgb(0.4), Vec3d(-0.9, -0.5, 0.7), 12.0}},
@@ -110,5 +110,5 @@ TEST(LafortuneControls, AreAllRejected) {
                                         50.0);
 }
 
-}  // namespace
+}  // namespace lafortune_test
 }  // namespace scatterlab

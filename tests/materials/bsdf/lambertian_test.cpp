@@ -4,7 +4,7 @@
 #include "materials/bsdf/lambertian.h"
 
 namespace scatterlab {
-namespace {
+namespace lambertian_test {
 
 TEST(Lambertian, EvalIsAlbedoOverPiAboveAndZeroBelow) {
   const LambertianBsdf model(Rgb(0.2, 0.4, 0.6));
@@ -56,5 +56,5 @@ TEST(Lambertian, TwoSidedWrapperFlipsBackfacingDirections) {
   EXPECT_EQ(oneSided.eval(wi, wo), Rgb(0.0));
 }
 
-}  // namespace
+}  // namespace lambertian_test
 }  // namespace scatterlab

@@ -13,7 +13,7 @@
 #include "materials/core/cie.h"
 
 namespace scatterlab {
-namespace {
+namespace metals_test {
 
 struct MetalSpectra {
   Spectrum eta, k;
@@ -202,5 +202,5 @@ TEST(MetalReduction, ChannelIndexReproducesTheReflectance) {
   EXPECT_THROW(indexWithNormalReflectance(1.5, -0.1), std::domain_error);
 }
 
-}  // namespace
+}  // namespace metals_test
 }  // namespace scatterlab

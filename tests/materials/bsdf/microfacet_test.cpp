@@ -8,7 +8,7 @@
 #include "materials/core/quadrature.h"
 
 namespace scatterlab {
-namespace {
+namespace microfacet_test {
 
 struct Roughness {
   double x, y;
@@ -77,8 +77,8 @@ template <typename Map> double solidAnglePerUnitSquare(const Map& map, const Vec
   return glm::length(glm::cross(d1, d2));
 }
 
-template <typename Distribution> class MicrofacetDistributionTest : public testing::Test {};
-using Distributions = testing::Types<GgxDistribution<double>, BeckmannDistribution<double>>;
+template <typename Distribution> class MicrofacetDistributionTest : public ::testing::Test {};
+using Distributions = ::testing::Types<GgxDistribution<double>, BeckmannDistribution<double>>;
 // No name generator: CTest then names each test by its type,
 // "MicrofacetDistributionTest.ProjectedAreaIsNormalised<scatterlab::GgxDistribution<double>>"
 // (CMake's GoogleTest discovery reads the type only after a numeric index).
@@ -327,5 +327,5 @@ template <template <typename> class Distribution> void checkJetDerivatives() {
 TEST(MicrofacetJet, GgxDerivativesAreFiniteAndCorrect) { checkJetDerivatives<GgxDistribution>(); }
 TEST(MicrofacetJet, BeckmannDerivativesAreFiniteAndCorrect) { checkJetDerivatives<BeckmannDistribution>(); }
 
-}  // namespace
+}  // namespace microfacet_test
 }  // namespace scatterlab

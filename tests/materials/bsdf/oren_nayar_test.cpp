@@ -6,7 +6,7 @@
 #include "materials/bsdf/oren_nayar.h"
 
 namespace scatterlab {
-namespace {
+namespace oren_nayar_test {
 
 // pbrt-v3 OrenNayar::f, written with angles, computed independently of the kernel.
 double orenNayarByAngles(double albedo, double sigma, const Vec3d& wi, const Vec3d& wo) {
@@ -61,5 +61,5 @@ TEST(OrenNayarControls, AreAllRejected) {
   catalog_suite::expectControlsRejected(Suite, {{"type", "oren-nayar"}, {"sigma", 0.5}}, 40.0);
 }
 
-}  // namespace
+}  // namespace oren_nayar_test
 }  // namespace scatterlab

@@ -7,7 +7,7 @@
 #include "materials/bsdf/phong.h"
 
 namespace scatterlab {
-namespace {
+namespace phong_test {
 
 const Vec3d Wi = directionFromDegrees(30, 0);
 
@@ -104,5 +104,5 @@ TEST(BlinnPhongControls, AreAllRejected) {
       Suite, {{"type", "blinn-phong"}, {"kd", 0.2}, {"ks", 0.2}, {"exponent", 200}}, 70.0);
 }
 
-}  // namespace
+}  // namespace phong_test
 }  // namespace scatterlab

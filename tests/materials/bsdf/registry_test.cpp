@@ -15,7 +15,7 @@
 #include "tests/test_names.h"
 
 namespace scatterlab {
-namespace {
+namespace registry_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -166,7 +166,7 @@ struct BadMaterial {
 
 void PrintTo(const BadMaterial& bad, std::ostream* os) { *os << bad.what << ": " << bad.material.dump(); }
 
-class BadMaterialTest : public testing::TestWithParam<BadMaterial> {};
+class BadMaterialTest : public ::testing::TestWithParam<BadMaterial> {};
 
 TEST_P(BadMaterialTest, IsRejectedWithAMessageNamingKeyValueAndAllowed) {
   const BadMaterial& bad = GetParam();
@@ -185,7 +185,7 @@ const double Infinity = std::numeric_limits<double>::infinity();
 
 INSTANTIATE_TEST_SUITE_P(
     MaterialRegistry, BadMaterialTest,
-    testing::Values(
+    ::testing::Values(
         BadMaterial{"negative roughness",
                     {{"type", "conductor"}, {"alpha", -0.1}},
                     {"\"alpha\"", "-0.1", "out of range", "[0.001, 1]", "[alpha_x, alpha_y]"}},
@@ -250,7 +250,7 @@ INSTANTIATE_TEST_SUITE_P(
                     {{"type", "conductor"}, {"eta", {0.2, 0.4, 1.4}}},
                     {"\"eta\"", "[0.2,0.4,1.4]", "needs \"k\"", "\"eta\" and \"k\" together"}},
         BadMaterial{"k without eta", {{"type", "conductor"}, {"k", 3.0}}, {"\"k\"", "3", "needs \"eta\""}}),
-    [](const testing::TestParamInfo<BadMaterial>& info) {
+    [](const ::testing::TestParamInfo<BadMaterial>& info) {
       return test_names::readableTestName(info.param.what);
     });
 
@@ -428,11 +428,11 @@ TEST(MaterialCatalog, RangesDescribeTheirEnds) {
   EXPECT_GT(ValueRange::above(0).clamp(-1), 0.0);
 }
 
-}  // namespace
+}  // namespace registry_test
 }  // namespace scatterlab
 
 namespace scatterlab {
-namespace {
+namespace registry_test {
 
 // The typed value carries a material through the builders and the roughness-mismatch control
 // without a second validation, and gives what the JSON route gives.
@@ -454,5 +454,5 @@ TEST(ValidatedMaterial, IsBuiltAndMadeRougherWithoutValidatingAgain) {
   EXPECT_EQ(bsdf->eval(wi, wo), makeBsdf(material)->eval(wi, wo));
 }
 
-}  // namespace
+}  // namespace registry_test
 }  // namespace scatterlab

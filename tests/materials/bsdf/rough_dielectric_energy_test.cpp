@@ -17,7 +17,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_dielectric_energy_test {
 
 constexpr double Eta = 1.5;
 const std::vector<double> Alphas{0.1, 0.3, 0.6, 1.0};
@@ -102,5 +102,5 @@ TEST(RoughDielectricEnergy, SingleScatteringLossGrowsWithRoughnessOnBothSides) {
   }
 }
 
-}  // namespace
+}  // namespace rough_dielectric_energy_test
 }  // namespace scatterlab

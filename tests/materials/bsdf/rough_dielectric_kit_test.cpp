@@ -18,7 +18,7 @@
 #include "materials/bsdf/rough_dielectric.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_dielectric_kit_test {
 
 using nlohmann::json;
 
@@ -117,5 +117,5 @@ INSTANTIATE_TEST_SUITE_P(Controls, RoughDielectricNegativeControls,
                                   std::to_string(int(info.param.wiTheta));
                          });
 
-}  // namespace
+}  // namespace rough_dielectric_kit_test
 }  // namespace scatterlab

@@ -32,7 +32,7 @@
 #include "materials/bsdf/rough_dielectric.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_dielectric_multiscatter_kit_test {
 
 using nlohmann::json;
 
@@ -145,5 +145,5 @@ INSTANTIATE_TEST_SUITE_P(Controls, RoughDielectricMultiscatterControls,
                                   std::to_string(int(info.param.wiTheta));
                          });
 
-}  // namespace
+}  // namespace rough_dielectric_multiscatter_kit_test
 }  // namespace scatterlab

@@ -21,7 +21,7 @@
 #include "validation/reciprocity.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_dielectric_multiscatter_test {
 
 const char* name(MicrofacetType type) { return type == MicrofacetType::Ggx ? "Ggx" : "Beckmann"; }
 
@@ -562,5 +562,5 @@ TEST(RoughDielectricCompensation, RegistryOptionDefaultsToNoneAndRejectsAnisotro
   EXPECT_TRUE(makeBsdf(loadMaterialArgument(path.string()))->isLossless());
 }
 
-}  // namespace
+}  // namespace rough_dielectric_multiscatter_test
 }  // namespace scatterlab

@@ -16,7 +16,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_dielectric_test {
 
 // ---- Walter et al. 2007, independently ----
 
@@ -350,5 +350,5 @@ TEST(RoughDielectric, RegistryDefaultsRangesAndExampleFiles) {
   }
 }
 
-}  // namespace
+}  // namespace rough_dielectric_test
 }  // namespace scatterlab

@@ -8,7 +8,7 @@
 #include "materials/bsdf/rough_plastic.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_plastic_kit_test {
 
 struct PlasticCase {
   MicrofacetType type;
@@ -97,5 +97,5 @@ INSTANTIATE_TEST_SUITE_P(
                     85.0}),
     [](const ::testing::TestParamInfo<ControlCase>& info) { return std::string(info.param.name); });
 
-}  // namespace
+}  // namespace rough_plastic_kit_test
 }  // namespace scatterlab

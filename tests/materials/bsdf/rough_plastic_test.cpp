@@ -17,7 +17,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace rough_plastic_test {
 
 using Ggx = GgxDistribution<double>;
 using Beckmann = BeckmannDistribution<double>;
@@ -111,7 +111,7 @@ TEST(CoatingAlbedo, QuadratureAgreesWithTheClassicSamplersIntegral) {
   for (const Case c :
        {Case{0.3, 1.5, 0}, Case{0.3, 1.5, 70}, Case{1.0, 2.4, 45}, Case{1.0, 1.1, 85}, Case{0.1, 1.5, 30},
         Case{0.001, 2.4, 89.9}, Case{0.01, 1.8, 89.9}, Case{0.05, 2.4, 89.9}}) {
-    SCOPED_TRACE(testing::Message() << "alpha " << c.alpha << " eta " << c.eta << " theta " << c.thetaDeg);
+    SCOPED_TRACE(::testing::Message() << "alpha " << c.alpha << " eta " << c.eta << " theta " << c.thetaDeg);
     const Vec3d wi = directionFromDegrees(c.thetaDeg, 0);
     EXPECT_NEAR(dielectricReflectionAlbedo(Ggx(c.alpha, c.alpha), c.eta, wi),
                 albedoByClassicQuadrature(Ggx(c.alpha, c.alpha), c.eta, wi), 2e-6);
@@ -341,5 +341,5 @@ TEST(RoughPlastic, ExampleMaterialBuilds) {
   EXPECT_GT(model->pdf(directionFromDegrees(30, 0), directionFromDegrees(30, 180)), 0.0);
 }
 
-}  // namespace
+}  // namespace rough_plastic_test
 }  // namespace scatterlab

@@ -10,7 +10,7 @@
 #include "validation/seed_study.h"
 
 namespace scatterlab {
-namespace {
+namespace seed_study_test {
 
 struct StudyCase {
   const char* name;
@@ -44,5 +44,5 @@ INSTANTIATE_TEST_SUITE_P(
             "BlinnPhong_wi20", {{"type", "blinn-phong"}, {"kd", 0.4}, {"ks", 0.15}, {"exponent", 30}}, 20.0}),
     [](const ::testing::TestParamInfo<StudyCase>& info) { return std::string(info.param.name); });
 
-}  // namespace
+}  // namespace seed_study_test
 }  // namespace scatterlab

@@ -19,7 +19,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace smooth_conductor_test {
 
 using nlohmann::json;
 
@@ -137,5 +137,5 @@ TEST(SmoothConductorKit, GenericControlsAreReportedNotApplicable) {
   }
 }
 
-}  // namespace
+}  // namespace smooth_conductor_test
 }  // namespace scatterlab

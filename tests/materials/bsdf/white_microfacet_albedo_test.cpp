@@ -12,7 +12,7 @@
 #include "materials/core/warp.h"
 
 namespace scatterlab {
-namespace {
+namespace white_microfacet_albedo_test {
 
 // The generator's accuracy (white_microfacet_albedo.h): absolute error below 1e-6. A node
 // recomputed here with the same quadrature matches to round-off on the same build; 1e-6 also
@@ -201,5 +201,5 @@ TEST(WhiteMicrofacetAlbedoTable, LookupsAreInRangeAndRejectRoughnessBeyondTheTab
             WhiteMicrofacetAlbedo::shared(MicrofacetType::Ggx, 0.2, 0.2).get());
 }
 
-}  // namespace
+}  // namespace white_microfacet_albedo_test
 }  // namespace scatterlab

@@ -10,7 +10,7 @@
 #include "materials/bssrdf/half_space_walk.h"
 
 namespace scatterlab {
-namespace {
+namespace annulus_profile_test {
 
 TEST(AnnulusProfile, AveragesCarryTheProfilesPower) {
   const BurleyProfile profile(Rgb(0.3, 0.6, 0.9), Rgb(0.5, 1.0, 2.0));
@@ -64,5 +64,5 @@ TEST(AnnulusProfile, NoiseFloorOfOneAnnulus) {
               std::sqrt(2.0 / Pi) * std::sqrt(p * (1 - p) / n) / p, 1e-15);
 }
 
-}  // namespace
+}  // namespace annulus_profile_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "materials/core/quadrature.h"
 
 namespace scatterlab {
-namespace {
+namespace beam_diffusion_test {
 
 const BeamDiffusionTable& table13() { return *BeamDiffusionTable::shared(0.0, 1.3); }
 
@@ -133,5 +133,5 @@ TEST(BeamDiffusionProfile, ScalesTheOpticalRowBySigmaT) {
   EXPECT_EQ(p.eval(1.01 * t.radii()[63] / sigmaT).x, 0.0);
 }
 
-}  // namespace
+}  // namespace beam_diffusion_test
 }  // namespace scatterlab

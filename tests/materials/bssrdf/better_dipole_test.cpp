@@ -4,7 +4,7 @@
 #include "materials/bssrdf/better_dipole.h"
 
 namespace scatterlab {
-namespace {
+namespace better_dipole_test {
 
 TEST(BetterDipole, ANonAbsorbingMediumReflectsEverything) {
   // alpha' = 1: sigma_tr = 0 and Rd = C_E + 2 A C_phi = 1 exactly, at any eta.
@@ -51,5 +51,5 @@ TEST(BetterDipole, ProfileIsPositiveAndDecreasing) {
   }
 }
 
-}  // namespace
+}  // namespace better_dipole_test
 }  // namespace scatterlab

@@ -3,7 +3,7 @@
 #include "materials/bssrdf/burley.h"
 
 namespace scatterlab {
-namespace {
+namespace burley_test {
 
 TEST(BurleyProfile, InverseCdfRoundTripsTo1e10) {
   // docs/validation.md section 6: F(r(u)) = u to 1e-10 for the exact closed-form inverse.
@@ -55,5 +55,5 @@ TEST(BurleyProfile, FiniteAtZeroRadius) {
   EXPECT_THROW(BurleyProfile(Rgb(0.5), Rgb(0.0)), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace burley_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "materials/core/math.h"
 
 namespace scatterlab {
-namespace {
+namespace chandrasekhar_h_test {
 
 // H is computed here, by the Gauss-Legendre iteration; these are its defining relations.
 TEST(ChandrasekharH, ZerothMomentRelation) {
@@ -61,5 +61,5 @@ TEST(ChandrasekharH, SearchlightAlbedoInvertsTheDirectionalAlbedo) {
   EXPECT_THROW(searchlightAlbedoForReflectance(1.0), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace chandrasekhar_h_test
 }  // namespace scatterlab

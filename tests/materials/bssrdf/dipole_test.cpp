@@ -4,7 +4,7 @@
 #include "materials/bssrdf/dipole.h"
 
 namespace scatterlab {
-namespace {
+namespace dipole_test {
 
 using testing_support::measuredMedium;
 
@@ -54,5 +54,5 @@ TEST(JensenDipole, CumulativeKeepsItsPrecisionAtSmallRadii) {
   }
 }
 
-}  // namespace
+}  // namespace dipole_test
 }  // namespace scatterlab

@@ -7,7 +7,7 @@
 #include "validation/half_space_reference.h"
 
 namespace scatterlab {
-namespace {
+namespace half_space_walk_test {
 
 HalfSpaceWalkSettings settings(double albedo, uint64_t paths, uint64_t seed) {
   HalfSpaceWalkSettings s;
@@ -151,5 +151,5 @@ TEST(HalfSpaceWalk, RejectsSettingsOutOfRange) {
   EXPECT_THROW(simulateHalfSpace(s), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace half_space_walk_test
 }  // namespace scatterlab

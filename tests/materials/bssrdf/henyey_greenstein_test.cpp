@@ -5,7 +5,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace henyey_greenstein_test {
 
 TEST(HenyeyGreenstein, NormalisedWithMeanCosineG) {
   for (const double g : {-0.8, -0.3, 0.0, 0.5, 0.95}) {
@@ -46,5 +46,5 @@ TEST(HenyeyGreenstein, SampledDirectionsPassTheChiSquareKit) {
   }
 }
 
-}  // namespace
+}  // namespace henyey_greenstein_test
 }  // namespace scatterlab

@@ -9,7 +9,7 @@
 #include "materials/bssrdf/measured_media.h"
 
 namespace scatterlab {
-namespace {
+namespace measured_media_test {
 
 nlohmann::json mediaFile() {
   std::ifstream file(std::filesystem::path(SCATTERLAB_DATA_DIR) / "media.json");
@@ -44,5 +44,5 @@ TEST(MeasuredMedia, TwelveDistinctNamesAndMarbleAtOnePointFive) {
   EXPECT_EQ(findMeasuredMedium("skin1"), nullptr);  // names are case-sensitive, as in pbrt
 }
 
-}  // namespace
+}  // namespace measured_media_test
 }  // namespace scatterlab

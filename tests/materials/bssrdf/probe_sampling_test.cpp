@@ -6,7 +6,7 @@
 #include "materials/core/rng.h"
 
 namespace scatterlab {
-namespace {
+namespace probe_sampling_test {
 
 const BurleyProfile& colouredProfile() {
   static const BurleyProfile p(Rgb(0.8, 0.5, 0.2), Rgb(0.5, 1.0, 2.0));
@@ -90,5 +90,5 @@ TEST(ProbeSampler, DefaultChannelProbabilitiesSkipChannelsThatReflectNothing) {
   EXPECT_THROW(ProbeSampler(p, bad), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace probe_sampling_test
 }  // namespace scatterlab

@@ -16,7 +16,7 @@
 #include "materials/bssrdf/separable_bssrdf.h"
 
 namespace scatterlab {
-namespace {
+namespace profile_autodiff_test {
 
 constexpr int N = 2;
 using Jet = ceres::Jet<double, N>;
@@ -109,5 +109,5 @@ TEST(ProfileAutodiff, PhaseFunctionAndDirectionalTerm) {
   expectGradient([&](const Jet& mu, const Jet&) { return separableDirectional(mu, 1.3, c); }, 0.4, 0.0);
 }
 
-}  // namespace
+}  // namespace profile_autodiff_test
 }  // namespace scatterlab

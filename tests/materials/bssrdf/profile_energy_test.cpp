@@ -8,7 +8,7 @@
 #include "tests/test_names.h"
 
 namespace scatterlab {
-namespace {
+namespace profile_energy_test {
 
 using testing_support::measuredMedium;
 using testing_support::profileEnergy;
@@ -23,7 +23,7 @@ void PrintTo(const ProfileCase& c, std::ostream* os) {
   *os << toString(c.model) << " " << c.medium << " g=" << c.g;
 }
 
-class ProfileEnergy : public testing::TestWithParam<ProfileCase> {
+class ProfileEnergy : public ::testing::TestWithParam<ProfileCase> {
  protected:
   std::shared_ptr<const RadialProfile> profile() const {
     return makeProfile(GetParam().model, measuredMedium(GetParam().medium, GetParam().g),
@@ -74,20 +74,20 @@ std::vector<ProfileCase> cases(std::vector<std::string> media, double g = 0.0) {
   return out;
 }
 
-std::string caseName(const testing::TestParamInfo<ProfileCase>& info) {
+std::string caseName(const ::testing::TestParamInfo<ProfileCase>& info) {
   return test_names::readableTestName(toString(info.param.model) + "_" + info.param.medium +
                                       (info.param.g != 0 ? "_anisotropic" : ""));
 }
 
-INSTANTIATE_TEST_SUITE_P(Profiles, ProfileEnergy, testing::ValuesIn(cases({"Skin1"})), caseName);
+INSTANTIATE_TEST_SUITE_P(Profiles, ProfileEnergy, ::testing::ValuesIn(cases({"Skin1"})), caseName);
 // Marble (eta 1.5, high albedo), Ketchup (low albedo), Spectralon (no absorption: the dipoles'
 // 1/r^3 tails), and an anisotropic medium (g = 0.7: beam diffusion's single scattering).
-INSTANTIATE_TEST_SUITE_P(Grid, ProfileEnergy, testing::ValuesIn([] {
+INSTANTIATE_TEST_SUITE_P(Grid, ProfileEnergy, ::testing::ValuesIn([] {
                            auto all = cases({"Marble", "Ketchup", "Spectralon"});
                            for (const auto& c : cases({"Skin2"}, 0.7)) all.push_back(c);
                            return all;
                          }()),
                          caseName);
 
-}  // namespace
+}  // namespace profile_energy_test
 }  // namespace scatterlab

@@ -5,7 +5,7 @@
 #include "materials/core/quadrature.h"
 
 namespace scatterlab {
-namespace {
+namespace separable_bssrdf_test {
 
 // The directional term's normalisation c, proven: integral over the hemisphere of
 // Ft(w) |cos| / (pi c) dw = 1, by adaptive quadrature of the exact Fresnel term (not by the
@@ -46,5 +46,5 @@ TEST(SeparableBssrdf, IsFresnelTransmittanceTimesProfileTimesFresnelTransmittanc
   EXPECT_EQ(s.directional(-0.1), 0.0);
 }
 
-}  // namespace
+}  // namespace separable_bssrdf_test
 }  // namespace scatterlab

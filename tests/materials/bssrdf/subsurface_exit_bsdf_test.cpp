@@ -9,7 +9,7 @@
 #include "validation/bsdf_check.h"
 
 namespace scatterlab {
-namespace {
+namespace subsurface_exit_bsdf_test {
 
 TEST(SubsurfaceExitBsdf, PassesTheKitAndIsLossless) {
   for (const double eta : {1.0, 1.3, 1.5}) {
@@ -35,5 +35,5 @@ TEST(SubsurfaceExitBsdf, IsTheDirectionalTerm) {
   EXPECT_EQ(model.eval(Vec3d(0, 0, 1), Vec3d(0, 0, -1)), Rgb(0.0));
 }
 
-}  // namespace
+}  // namespace subsurface_exit_bsdf_test
 }  // namespace scatterlab

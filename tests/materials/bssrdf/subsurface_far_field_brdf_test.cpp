@@ -13,7 +13,7 @@
 #include "materials/core/quadrature.h"
 
 namespace scatterlab {
-namespace {
+namespace subsurface_far_field_brdf_test {
 
 using nlohmann::json;
 
@@ -91,5 +91,5 @@ TEST(SubsurfaceFarFieldBrdf, RegistryGivesItForSubsurfaceAndTheBsdfOtherwise) {
   EXPECT_THROW(farField(json{{"type", "subsurface"}, {"scale", -1}}), MaterialError);
 }
 
-}  // namespace
+}  // namespace subsurface_far_field_brdf_test
 }  // namespace scatterlab

@@ -9,7 +9,7 @@
 #include "validation/subsurface_check.h"
 
 namespace scatterlab {
-namespace {
+namespace subsurface_kit_test {
 
 using testing_support::measuredMedium;
 
@@ -34,7 +34,7 @@ struct KitCase {
 };
 void PrintTo(const KitCase& c, std::ostream* os) { *os << toString(c.model) << " " << c.medium; }
 
-std::string caseName(const testing::TestParamInfo<KitCase>& info) {
+std::string caseName(const ::testing::TestParamInfo<KitCase>& info) {
   return test_names::readableTestName(toString(info.param.model) + "_" + info.param.medium);
 }
 
@@ -46,7 +46,7 @@ std::vector<KitCase> cases(std::vector<std::string> media) {
   return out;
 }
 
-class SubsurfaceKit : public testing::TestWithParam<KitCase> {
+class SubsurfaceKit : public ::testing::TestWithParam<KitCase> {
  protected:
   SubsurfaceMaterial material() const {
     SubsurfaceMaterial m;
@@ -64,8 +64,8 @@ TEST_P(SubsurfaceKit, EveryRowPasses) {
   EXPECT_TRUE(report.passed()) << formatTable(report);
 }
 
-INSTANTIATE_TEST_SUITE_P(Profiles, SubsurfaceKit, testing::ValuesIn(cases({"Skin1"})), caseName);
-INSTANTIATE_TEST_SUITE_P(Grid, SubsurfaceKit, testing::ValuesIn(cases({"Marble", "Ketchup", "Spectralon"})),
+INSTANTIATE_TEST_SUITE_P(Profiles, SubsurfaceKit, ::testing::ValuesIn(cases({"Skin1"})), caseName);
+INSTANTIATE_TEST_SUITE_P(Grid, SubsurfaceKit, ::testing::ValuesIn(cases({"Marble", "Ketchup", "Spectralon"})),
                          caseName);
 
 class SubsurfaceKitControls : public SubsurfaceKit {};
@@ -82,7 +82,7 @@ TEST_P(SubsurfaceKitControls, KitRejectsEveryBrokenSampler) {
     EXPECT_EQ(row.note.rfind("rejected", 0), 0u) << row.test << ": " << row.note;
 }
 
-INSTANTIATE_TEST_SUITE_P(Controls, SubsurfaceKitControls, testing::ValuesIn(cases({"Skin1"})), caseName);
+INSTANTIATE_TEST_SUITE_P(Controls, SubsurfaceKitControls, ::testing::ValuesIn(cases({"Skin1"})), caseName);
 
 TEST(SubsurfaceKitControls, WrongChannelWeightsAreNotApplicableToAGreyMaterial) {
   const BurleyProfile grey(Rgb(0.5), Rgb(1.0));
@@ -108,5 +108,5 @@ TEST(SubsurfaceKitSeedStudy, RadiusTestRejectsACorrectSamplerAtItsNominalRate) {
   EXPECT_GE(rejected, 1);
 }
 
-}  // namespace
+}  // namespace subsurface_kit_test
 }  // namespace scatterlab

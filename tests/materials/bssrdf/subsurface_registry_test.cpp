@@ -6,7 +6,7 @@
 #include "tests/test_names.h"
 
 namespace scatterlab {
-namespace {
+namespace subsurface_registry_test {
 
 using nlohmann::json;
 
@@ -103,7 +103,7 @@ struct BadSubsurface {
 };
 void PrintTo(const BadSubsurface& b, std::ostream* os) { *os << b.what; }
 
-class BadSubsurfaceTest : public testing::TestWithParam<BadSubsurface> {};
+class BadSubsurfaceTest : public ::testing::TestWithParam<BadSubsurface> {};
 
 TEST_P(BadSubsurfaceTest, IsRejectedNamingKeyValueAndAllowed) {
   const std::string message = errorOf(GetParam().material);
@@ -116,7 +116,7 @@ TEST_P(BadSubsurfaceTest, IsRejectedNamingKeyValueAndAllowed) {
 
 INSTANTIATE_TEST_SUITE_P(
     SubsurfaceRegistry, BadSubsurfaceTest,
-    testing::Values(
+    ::testing::Values(
         BadSubsurface{"negative scattering",
                       {{"type", "subsurface"}, {"sigma_s", -1.0}, {"sigma_a", 0.1}},
                       {"\"sigma_s\"", "-1", "out of range", ">= 0"}},
@@ -171,7 +171,7 @@ INSTANTIATE_TEST_SUITE_P(
                       {"\"albedo\"", "\"reflectance\"", "\"mfp\""}},
         BadSubsurface{
             "a BSDF", {{"type", "lambertian"}}, {"\"type\"", "\"lambertian\"", "not a subsurface material"}}),
-    [](const testing::TestParamInfo<BadSubsurface>& info) {
+    [](const ::testing::TestParamInfo<BadSubsurface>& info) {
       return test_names::readableTestName(info.param.what);
     });
 
@@ -187,5 +187,5 @@ TEST(SubsurfaceRegistry, MakeBsdfRefusesASubsurfaceMaterial) {
   EXPECT_FALSE(isSubsurfaceMaterial(json::array()));
 }
 
-}  // namespace
+}  // namespace subsurface_registry_test
 }  // namespace scatterlab

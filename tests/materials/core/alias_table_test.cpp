@@ -7,7 +7,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace alias_table_test {
 
 // 2 tests at family-wise 1%.
 const double Threshold = sidakSignificance(0.01, 2);
@@ -78,5 +78,5 @@ TEST(AliasTable, EmptyAndInvalid) {
   EXPECT_THROW(AliasTable{bad}, std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace alias_table_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "materials/core/catmull_rom.h"
 
 namespace scatterlab {
-namespace {
+namespace catmull_rom_weights_test {
 
 // Non-uniform nodes, denser toward 1 like the beam-diffusion albedo grid.
 std::vector<double> nodes() {
@@ -58,5 +58,5 @@ TEST(CatmullRomWeights, ConvergeOnASmoothFunction) {
     EXPECT_NEAR(interpolate(x, f, at), std::exp(at), at < 0.3 ? 1e-2 : 3e-3) << at;
 }
 
-}  // namespace
+}  // namespace catmull_rom_weights_test
 }  // namespace scatterlab

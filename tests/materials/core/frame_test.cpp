@@ -5,7 +5,7 @@
 #include "materials/core/warp.h"
 
 namespace scatterlab {
-namespace {
+namespace frame_test {
 
 void expectOrthonormal(const Framed& f) {
   EXPECT_NEAR(glm::length(f.s), 1.0, 1e-12);
@@ -70,5 +70,5 @@ TEST(Spherical, ReflectMirrorsAboutNormal) {
   EXPECT_NEAR(r.z, w.z, 1e-15);
 }
 
-}  // namespace
+}  // namespace frame_test
 }  // namespace scatterlab

@@ -13,7 +13,7 @@
 #include "materials/core/rng.h"
 
 namespace scatterlab {
-namespace {
+namespace lobe_choice_test {
 
 // Zero lobes first, between and last, and lobes from 5% to 45%.
 constexpr std::array<double, 7> Probabilities{0.0, 0.05, 0.3, 0.0, 0.2, 0.45, 0.0};
@@ -146,5 +146,5 @@ TEST(LobeChoice, ThreeLobesMatchTheCumulativeComparisons) {
   }
 }
 
-}  // namespace
+}  // namespace lobe_choice_test
 }  // namespace scatterlab

@@ -6,7 +6,7 @@
 #include "materials/core/monotone_cubic_cdf.h"
 
 namespace scatterlab {
-namespace {
+namespace monotone_cubic_cdf_test {
 
 // The CDF of the exponential distribution at nodes: F = 1 - e^-x, f = e^-x.
 MonotoneCubicCdf exponentialCdf(int nodes, double last) {
@@ -71,5 +71,5 @@ TEST(MonotoneCubicCdf, RejectsDecreasingValuesAndNegativeDensities) {
   EXPECT_THROW(MonotoneCubicCdf({0.0}, {0.0}, {1.0}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace monotone_cubic_cdf_test
 }  // namespace scatterlab

@@ -9,7 +9,7 @@
 #include "materials/core/parse_number.h"
 
 namespace scatterlab {
-namespace {
+namespace parse_number_test {
 
 TEST(ParseNumber, StrtodVariantAgreesWithFromChars) {
   for (const std::string text : {"0",
@@ -60,5 +60,5 @@ TEST(ParseNumber, StrtodVariantAgreesWithFromChars) {
   }
 }
 
-}  // namespace
+}  // namespace parse_number_test
 }  // namespace scatterlab

@@ -7,7 +7,7 @@
 #include "validation/chi_square.h"
 
 namespace scatterlab {
-namespace {
+namespace piecewise_constant_2d_test {
 
 TEST(PiecewiseConstant2D, ProbabilitiesAreNormalisedWeights) {
   const std::vector<double> w{1, 2, 0, 3, 0, 0, 4, 5, 1};
@@ -54,5 +54,5 @@ TEST(PiecewiseConstant2D, RejectsBadShapes) {
   EXPECT_THROW(PiecewiseConstant2D(negative, 2, 2), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace piecewise_constant_2d_test
 }  // namespace scatterlab

@@ -9,7 +9,7 @@
 #include "materials/core/catmull_rom.h"
 
 namespace scatterlab {
-namespace {
+namespace piecewise_cubic_test {
 
 TEST(PiecewiseCubic1D, InterpolatesTheNodesAndReproducesQuadratics) {
   const std::vector<double> x{0.0, 0.1, 0.35, 0.4, 0.9, 1.7};
@@ -63,5 +63,5 @@ TEST(PiecewiseCubic1D, RejectsTooFewOrUnsortedNodes) {
   EXPECT_THROW(PiecewiseCubic1D({0.0, 1.0, 2.0}, {1.0, 2.0}), std::invalid_argument);
 }
 
-}  // namespace
+}  // namespace piecewise_cubic_test
 }  // namespace scatterlab

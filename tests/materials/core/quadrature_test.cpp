@@ -6,7 +6,7 @@
 #include "materials/core/quadrature.h"
 
 namespace scatterlab {
-namespace {
+namespace quadrature_test {
 
 TEST(AdaptiveSimpson, ExactForCubics) {
   // Simpson's rule integrates cubics exactly: int_0^2 x^3 - x dx = 4 - 2.
@@ -49,5 +49,5 @@ TEST(AdaptiveSimpson, JumpIsResolvedByDepth) {
   EXPECT_NEAR(got, jump, 1e-6);
 }
 
-}  // namespace
+}  // namespace quadrature_test
 }  // namespace scatterlab

@@ -3,7 +3,7 @@
 #include "materials/core/rng.h"
 
 namespace scatterlab {
-namespace {
+namespace rng_test {
 
 // Known-answer vectors of Philox4x32-10 from Random123's kat_vectors (Salmon et al. 2011).
 TEST(CounterRng, PhiloxKnownAnswers) {
@@ -58,5 +58,5 @@ TEST(CounterRng, DerivedSeedsAreDistinct) {
   EXPECT_EQ(deriveSeed(5, 3), deriveSeed(5, 3));
 }
 
-}  // namespace
+}  // namespace rng_test
 }  // namespace scatterlab

@@ -5,7 +5,7 @@
 #include "materials/core/root_finding.h"
 
 namespace scatterlab {
-namespace {
+namespace root_finding_test {
 
 TEST(RootFinding, NewtonBisectionSolvesAMonotoneFunctionToTheTolerance) {
   // x^3 + x: a simple root for every target, Newton from a poor start.
@@ -35,5 +35,5 @@ TEST(RootFinding, BisectionFindsTheCrossingOfAStepFreeFunction) {
   EXPECT_NEAR(x, std::log(2.0), 1e-12);
 }
 
-}  // namespace
+}  // namespace root_finding_test
 }  // namespace scatterlab

@@ -9,7 +9,7 @@
 #include "materials/core/quadrature.h"
 
 namespace scatterlab {
-namespace {
+namespace special_functions_test {
 
 // Stirling's series after the shift errs by < 7e-16; the rounding of its terms (~12.8 for
 // x < 10, ~x ln x above) leaves ~1e-14 absolute, or relative for large values.
@@ -88,5 +88,5 @@ TEST(InverseErrorFunction, InverseErfcKeepsRelativePrecisionInTheTails) {
   EXPECT_TRUE(std::isfinite(inverseErfc(2.0)));
 }
 
-}  // namespace
+}  // namespace special_functions_test
 }  // namespace scatterlab

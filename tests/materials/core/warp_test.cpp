@@ -6,7 +6,7 @@
 #include "materials/core/warp.h"
 
 namespace scatterlab {
-namespace {
+namespace warp_test {
 
 // A grid of u that avoids the exact edges, where phi = 0 and 2 pi (or the disk's centre)
 // are the same point and no inverse can return both.
@@ -83,5 +83,5 @@ TEST(Warp, UniformConeRoundTripAndSupport) {
   }
 }
 
-}  // namespace
+}  // namespace warp_test
 }  // namespace scatterlab

@@ -16,7 +16,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace measured_registry_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -147,5 +147,5 @@ TEST(MeasuredMaterial, IsListedWithAPathParameter) {
   EXPECT_FALSE(withScaledRoughness(json{{"type", "measured"}, {"file", "x.binary"}}, 1.1).has_value());
 }
 
-}  // namespace
+}  // namespace measured_registry_test
 }  // namespace scatterlab

@@ -12,7 +12,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace measurement_synthesis_test {
 
 using nlohmann::json;
 
@@ -203,5 +203,5 @@ TEST(StandardNormal, BoxMullerHasUnitVarianceAndTheRightTail) {
   EXPECT_NEAR(double(beyond2) / N, tail, 5 * std::sqrt(tail * (1 - tail) / N));
 }
 
-}  // namespace
+}  // namespace measurement_synthesis_test
 }  // namespace scatterlab

@@ -18,7 +18,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace merl_io_test {
 
 namespace fs = std::filesystem;
 using measured_test::scratchPath;
@@ -281,5 +281,5 @@ TEST(MerlIo, WriterNamesAMissingDirectory) {
   }
 }
 
-}  // namespace
+}  // namespace merl_io_test
 }  // namespace scatterlab

@@ -27,7 +27,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace merl_reference_test {
 
 constexpr double ReaderPi = std::numbers::pi;
 constexpr int ThetaHalfRes = 90, ThetaDiffRes = 90, PhiDiffRes = 180;
@@ -198,5 +198,5 @@ TEST_F(MerlReference, ALinearThetaHalfIndexOrAnUnfoldedPhiDiffReadsAnotherValue)
   EXPECT_GE(unfoldedDiffers, 3);
 }
 
-}  // namespace
+}  // namespace merl_reference_test
 }  // namespace scatterlab

@@ -10,7 +10,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace ngan_fits_test {
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -139,5 +139,5 @@ TEST(PublishedFits, FileErrorsNameTheFileAndLine) {
   }
 }
 
-}  // namespace
+}  // namespace ngan_fits_test
 }  // namespace scatterlab

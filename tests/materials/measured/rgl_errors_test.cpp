@@ -13,7 +13,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace rgl_errors_test {
 
 const TensorFile& validFile() {
   static const TensorFile file = [] {
@@ -162,5 +162,5 @@ TEST(RglErrors, TruncatedFileNamesThePath) {
   }
 }
 
-}  // namespace
+}  // namespace rgl_errors_test
 }  // namespace scatterlab

@@ -14,7 +14,7 @@
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
-namespace {
+namespace rgl_kit_test {
 
 const std::filesystem::path RglDir = std::filesystem::path(SCATTERLAB_DATA_DIR) / "rgl";
 
@@ -136,5 +136,5 @@ TEST(RglKitSynthesised, AnisotropicFilePasses) {
   EXPECT_TRUE(report.passed()) << formatTable(report);
 }
 
-}  // namespace
+}  // namespace rgl_kit_test
 }  // namespace scatterlab

@@ -17,7 +17,7 @@
 #include "validation/energy.h"
 
 namespace scatterlab {
-namespace {
+namespace rgl_reference_test {
 
 using nlohmann::json;
 
@@ -181,5 +181,5 @@ TEST(RglFile, DescribesItself) {
   EXPECT_NEAR(felt->thetaMax(), PiOver2, 1e-6);  // stored as float32
 }
 
-}  // namespace
+}  // namespace rgl_reference_test
 }  // namespace scatterlab

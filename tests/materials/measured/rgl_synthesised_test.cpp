@@ -14,7 +14,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace rgl_synthesised_test {
 
 using nlohmann::json;
 
@@ -229,5 +229,5 @@ TEST(RglSynthesised, OtherFloatingPointDtypesReadAlike) {
   EXPECT_EQ(a.pdf(wi, wo), b.pdf(wi, wo));
 }
 
-}  // namespace
+}  // namespace rgl_synthesised_test
 }  // namespace scatterlab

@@ -12,7 +12,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace tabulated_brdf_test {
 
 using measured_test::synthesise;
 using nlohmann::json;
@@ -271,5 +271,5 @@ TEST(TabulatedBrdfFill, NoisyTableWithMissingGrazingNeverEvaluatesNegative) {
   }
 }
 
-}  // namespace
+}  // namespace tabulated_brdf_test
 }  // namespace scatterlab

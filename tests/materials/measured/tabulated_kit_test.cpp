@@ -16,7 +16,7 @@
 #include "validation/negative_controls.h"
 
 namespace scatterlab {
-namespace {
+namespace tabulated_kit_test {
 
 using nlohmann::json;
 
@@ -177,5 +177,5 @@ TEST(TabulatedSamplerEfficiency, BeatsCosineSamplingOnSpecularMaterials) {
   }
 }
 
-}  // namespace
+}  // namespace tabulated_kit_test
 }  // namespace scatterlab

@@ -12,7 +12,7 @@
 #include "measured_test_support.h"
 
 namespace scatterlab {
-namespace {
+namespace tensor_file_test {
 
 namespace fs = std::filesystem;
 using measured_test::scratchPath;
@@ -252,5 +252,5 @@ TEST(TensorFileErrors, WriteLeavesNothingBehindOnFailure) {
   EXPECT_FALSE(fs::exists(missing));
 }
 
-}  // namespace
+}  // namespace tensor_file_test
 }  // namespace scatterlab

@@ -15,7 +15,7 @@
 #include "materials/registry/spec_validation.h"
 
 namespace scatterlab {
-namespace {
+namespace plugin_model_test {
 
 using nlohmann::json;
 
@@ -203,5 +203,5 @@ TEST(PluginBsdfGuard, ABuildThatThrowsOrBuildsNothingIsAPluginErrorAndAMaterialE
   }
 }
 
-}  // namespace
+}  // namespace plugin_model_test
 }  // namespace scatterlab
