@@ -30,7 +30,7 @@ json vectorJson(const Vec3d& v) { return json::array({v.x, v.y, v.z}); }
 Vec3d unitDirectionFromJson(const json& value, const std::string& key) {
   if (!value.is_array() || value.size() != 3)
     refuse(key, value, "is not an array of 3 numbers", DirectionAllowed);
-  Vec3d w;
+  Vec3d w(0.0);
   for (int i = 0; i < 3; ++i) {
     if (!value[i].is_number()) refuse(key, value, "has a component that is not a number", DirectionAllowed);
     w[i] = value[i].get<double>();

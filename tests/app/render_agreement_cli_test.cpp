@@ -68,7 +68,7 @@ TEST_P(RenderAgreementBadSpp, IsRefusedNamingTheValueAndTheRange) {
   const ProcessResult run =
       runScatterlab({"check", R"({"type":"lambertian"})", "--render-agreement", GetParam().value});
   EXPECT_EQ(run.exitCode, 2) << describe(run);
-  for (const std::string fragment :
+  for (const std::string& fragment :
        {std::string("--render-agreement"), "\"" + std::string(GetParam().value) + "\"",
         std::string("integer in [16, 65536]")})
     EXPECT_NE(run.err.find(fragment), std::string::npos) << "\"" << fragment << "\" missing from:\n"

@@ -93,8 +93,9 @@ TEST(ProfileComparison, PhotonBeamDiffusionIsClosestBehindAFresnelBoundary) {
     EXPECT_LT(pbd[ch], 0.12) << ch;
     EXPECT_LT(c.noiseFloor[ch], 0.05) << ch;
     for (const ModelComparison& m : c.models) {
-      if (m.model != ProfileModel::BeamDiffusion)
+      if (m.model != ProfileModel::BeamDiffusion) {
         EXPECT_LT(pbd[ch], m.errors.profileError[ch]) << toString(m.model);
+      }
     }
   }
 }

@@ -97,8 +97,8 @@ TEST(MeasuredMaterial, ABadRglFileIsNamedWithItsField) {
   const fs::path path = scratchPath("cut") += ".bsdf";
   std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   const std::string message = buildErrorOf(json{{"type", "measured"}, {"file", path.string()}});
-  for (const std::string fragment : {std::string("material key \"file\""), path.string(),
-                                     std::string("field \""), std::string("RGL .bsdf")})
+  for (const std::string& fragment : {std::string("material key \"file\""), path.string(),
+                                      std::string("field \""), std::string("RGL .bsdf")})
     EXPECT_NE(message.find(fragment), std::string::npos) << fragment << " not in " << message;
   fs::remove(path);
 }
@@ -112,7 +112,7 @@ TEST(MeasuredMaterial, AFileThatIsNeitherJsonNorMeasuredSaysBoth) {
   } catch (const MaterialError& error) {
     message = error.what();
   }
-  for (const std::string fragment :
+  for (const std::string& fragment :
        {path.string(), std::string("neither JSON"), std::string("truncated"), std::string("RGL .bsdf")})
     EXPECT_NE(message.find(fragment), std::string::npos) << fragment << " not in " << message;
   fs::remove(path);
