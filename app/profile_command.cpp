@@ -1,12 +1,12 @@
 #include "app/profile_command.h"
 
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/format_number.h"
 #include "app/json_output.h"
 #include "app/option_values.h"
 #include "app/profile_annuli.h"
@@ -117,12 +117,6 @@ void checkWalkOptions(const ProfileCommandOptions& options) {
                      ": sets the random walk's medium; allowed: only with --reference walk");
 }
 
-std::string fixed(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
                const std::vector<std::vector<double>>& means,
                const std::vector<std::optional<ChannelWalk>>& walks) {
@@ -135,14 +129,14 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
   std::cout << "\n";
   for (int c = 0; c < 3; ++c) {
     std::cout << "  " << ChannelNames[c] << "      "
-              << fixed(walks[0] ? "%-26.6f" : "%.6f", profile.totalReflectance()[c]);
+              << formatNumber(walks[0] ? "%-26.6f" : "%.6f", profile.totalReflectance()[c]);
     if (const auto& walk = walks[size_t(c)]) {
-      std::cout << fixed("%.6f", walk->result.totalReflectance) << " +- "
-                << fixed("%.6f", walk->result.totalStdError) << "  (albedo "
-                << fixed("%.6g", walk->result.settings.albedo) << ", " << walk->result.settings.paths
+      std::cout << formatNumber("%.6f", walk->result.totalReflectance) << " +- "
+                << formatNumber("%.6f", walk->result.totalStdError) << "  (albedo "
+                << formatNumber("%.6g", walk->result.settings.albedo) << ", " << walk->result.settings.paths
                 << " paths";
       if (walk->exactTotal)
-        std::cout << "; exact " << fixed("%.6f", *walk->exactTotal) << " by Chandrasekhar's H";
+        std::cout << "; exact " << formatNumber("%.6f", *walk->exactTotal) << " by Chandrasekhar's H";
       std::cout << ")";
     }
     std::cout << "\n";
@@ -155,12 +149,12 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
   header.erase(header.find_last_not_of(' ') + 1);
   std::cout << header << "\n";
   for (size_t k = 0; k + 1 < edges.size(); ++k) {
-    std::string line = "  " + fixed("%-10.4g", edges[k]) + " " + fixed("%-10.4g", edges[k + 1]);
+    std::string line = "  " + formatNumber("%-10.4g", edges[k]) + " " + formatNumber("%-10.4g", edges[k + 1]);
     for (int c = 0; c < 3; ++c) {
-      line += " " + fixed("%-12.5e", means[size_t(c)][k]);
+      line += " " + formatNumber("%-12.5e", means[size_t(c)][k]);
       if (const auto& walk = walks[size_t(c)])
-        line += " " + fixed("%-12.5e", walk->result.profile[k]) + " " +
-                fixed("%-12.3e", walk->result.profileStdError[k]);
+        line += " " + formatNumber("%-12.5e", walk->result.profile[k]) + " " +
+                formatNumber("%-12.3e", walk->result.profileStdError[k]);
     }
     line.erase(line.find_last_not_of(' ') + 1);
     std::cout << line << "\n";
@@ -202,7 +196,7 @@ json walkJson(const ChannelWalk& walk) {
 
 json rgbJson(const Rgb& v) { return json::array({v.x, v.y, v.z}); }
 
-std::string percent(double v) { return fixed("%+.1f%%", 100.0 * v); }
+std::string percent(double v) { return formatNumber("%+.1f%%", 100.0 * v); }
 
 // `text` right-aligned (negative width: left-aligned) in a column of |width| characters.
 std::string column(const std::string& text, int width) {
@@ -214,24 +208,26 @@ std::string column(const std::string& text, int width) {
 void printComparison(const LoadedMaterial& loaded, const ProfileComparison& comparison) {
   const ScatteringMedium& m = comparison.medium;
   std::cout << "material (every default filled in): " << jsonText(loaded.completed, -1) << "\n";
-  std::cout << "medium: sigma_s " << fixed("%.4g", m.sigmaS.x) << " " << fixed("%.4g", m.sigmaS.y) << " "
-            << fixed("%.4g", m.sigmaS.z) << ", sigma_a " << fixed("%.4g", m.sigmaA.x) << " "
-            << fixed("%.4g", m.sigmaA.y) << " " << fixed("%.4g", m.sigmaA.z) << " mm^-1, g " << m.g
-            << ", eta " << m.eta << "\n";
+  std::cout << "medium: sigma_s " << formatNumber("%.4g", m.sigmaS.x) << " "
+            << formatNumber("%.4g", m.sigmaS.y) << " " << formatNumber("%.4g", m.sigmaS.z) << ", sigma_a "
+            << formatNumber("%.4g", m.sigmaA.x) << " " << formatNumber("%.4g", m.sigmaA.y) << " "
+            << formatNumber("%.4g", m.sigmaA.z) << " mm^-1, g " << m.g << ", eta " << m.eta << "\n";
   std::cout << "walk: " << comparison.walks[0].settings.paths
             << " paths per channel, normal incidence; profile errors on " << comparison.edges.size() - 1
-            << " annuli to " << fixed("%.4g", comparison.edges.back()) << " mm plus the power beyond\n\n";
+            << " annuli to " << formatNumber("%.4g", comparison.edges.back())
+            << " mm plus the power beyond\n\n";
   std::cout
       << "channel  albedo     walk total          single scattering   multiple only       noise floor\n";
   for (int c = 0; c < 3; ++c) {
     const HalfSpaceWalkResult& w = comparison.walks[size_t(c)];
-    std::cout << "  " << ChannelNames[c] << "      " << fixed("%-10.6g", w.settings.albedo) << " "
-              << fixed("%.4f", comparison.walkTotal[c]) << " +- "
-              << fixed("%-8.4f", comparison.walkStdError[c]) << " " << fixed("%.4f", w.singleReflectance)
-              << " +- " << fixed("%-8.4f", w.singleStdError) << " "
-              << fixed("%.4f", comparison.walkMultipleTotal[c]) << " +- "
-              << fixed("%-8.4f", comparison.walkMultipleStdError[c]) << " "
-              << fixed("%.3f", comparison.noiseFloor[c]) << "\n";
+    std::cout << "  " << ChannelNames[c] << "      " << formatNumber("%-10.6g", w.settings.albedo) << " "
+              << formatNumber("%.4f", comparison.walkTotal[c]) << " +- "
+              << formatNumber("%-8.4f", comparison.walkStdError[c]) << " "
+              << formatNumber("%.4f", w.singleReflectance) << " +- "
+              << formatNumber("%-8.4f", w.singleStdError) << " "
+              << formatNumber("%.4f", comparison.walkMultipleTotal[c]) << " +- "
+              << formatNumber("%-8.4f", comparison.walkMultipleStdError[c]) << " "
+              << formatNumber("%.3f", comparison.noiseFloor[c]) << "\n";
   }
   std::cout << "\nagainst the walk (relative errors): total diffuse reflectance, and R(r) weighted by r\n"
             << "model           ch  total     all orders: total  R(r)    multiple only: total  R(r)\n";
@@ -239,10 +235,10 @@ void printComparison(const LoadedMaterial& loaded, const ProfileComparison& comp
     const ProfileErrors& e = model.errors;
     for (int c = 0; c < 3; ++c)
       std::cout << column(c == 0 ? toString(model.model) : "", -16) << ChannelNames[c] << "   "
-                << fixed("%-9.4f", e.total[c]) << " " << column(percent(e.totalError[c]), 18) << "  "
-                << fixed("%6.1f%%", 100.0 * e.profileError[c]) << " "
+                << formatNumber("%-9.4f", e.total[c]) << " " << column(percent(e.totalError[c]), 18) << "  "
+                << formatNumber("%6.1f%%", 100.0 * e.profileError[c]) << " "
                 << column(percent(e.multipleTotalError[c]), 21) << "  "
-                << fixed("%6.1f%%", 100.0 * e.multipleProfileError[c]) << "\n";
+                << formatNumber("%6.1f%%", 100.0 * e.multipleProfileError[c]) << "\n";
   }
 }
 
