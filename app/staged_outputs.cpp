@@ -9,6 +9,7 @@
 
 #include "app/exit_code.h"
 #include "materials/core/quoted.h"
+#include "materials/core/temporary_files.h"
 
 namespace scatterlab {
 
@@ -27,7 +28,7 @@ std::string errnoText() { return std::strerror(errno); }
 
 void createDirectories(const std::string& option, const fs::path& directory) {
   std::error_code error;
-  fs::create_directories(directory, error);
+  createDirectoriesUninterrupted(directory, error);
   if (error || !fs::is_directory(directory))
     throw InputError(option + ": cannot create the directory " + inQuotes(directory.string()) + " (" +
                      (error ? error.message() : "a file is in the way") +
@@ -86,19 +87,18 @@ void StagedOutputs::prepare() {
     createDirectories(output.option, directory);
     if (output.directory) {
       removeStaleTemporaries(output.target / StagingStem);
-      output.staging = TemporaryPath(
-          output.target / ("." + std::string(StagingStem) + ".partial-" + std::to_string(getpid())));
       std::error_code error;
-      fs::remove_all(output.staging.path(), error);
-      if (!fs::create_directory(output.staging.path(), error) || error)
+      output.staging = createTemporaryDirectory(
+          output.target / ("." + std::string(StagingStem) + ".partial-" + std::to_string(getpid())), error);
+      if (error)
         throw InputError(output.option + ": cannot write in the directory " + inQuotes(directory.string()) +
-                         " (" + (error ? error.message() : "cannot create a directory there") +
-                         "); allowed: a writable directory");
+                         " (" + error.message() + "); allowed: a writable directory");
       continue;
     }
     removeStaleTemporaries(output.target);
     fs::path name = output.target;
     name += temporarySuffix();
+    const auto interruptions = deferInterruptions();  // registered whenever it exists
     output.staging = TemporaryPath(name);
     ::unlink(name.c_str());
     const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);

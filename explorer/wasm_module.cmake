@@ -18,11 +18,14 @@ endif()
 # The module does not depend on the parent build's compiler or flags, so builds may share one
 # sub-build: the asan-ubsan preset points this at the release build's (CI builds release first,
 # so the sanitizer pass finds the module built and does not compile materials/ with emcc again).
-# Two parent builds sharing it must not run at the same time.
+# Its configure and build steps hold a lock on DIR.lock (flock, util-linux), so parent builds
+# sharing it may run at the same time: one waits while the other configures or builds it.
 set(SCATTERLAB_EXPLORER_WASM_DIR ${CMAKE_BINARY_DIR}/explorer-wasm
     CACHE PATH "Build directory of the explorer's WebAssembly module (a sub-build, configured with Emscripten)")
 set(SCATTERLAB_EXPLORER_WASM_JS ${SCATTERLAB_EXPLORER_WASM_DIR}/explorer/scatterlab-wasm.js)
-set(EMSCRIPTEN_ENVIRONMENT ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
+find_program(SCATTERLAB_FLOCK flock REQUIRED)
+set(EMSCRIPTEN_ENVIRONMENT ${SCATTERLAB_FLOCK} ${SCATTERLAB_EXPLORER_WASM_DIR}.lock ${CMAKE_COMMAND} -E env
+                           NODE_PATH=/usr/share/nodejs)
 # A compiler launcher (ccache) of the native build serves this one too.
 set(EMSCRIPTEN_LAUNCHER "")
 if(CMAKE_CXX_COMPILER_LAUNCHER)

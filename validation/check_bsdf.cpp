@@ -2,10 +2,12 @@
 
 #include <filesystem>
 
+#include "materials/core/temporary_files.h"
+
 namespace scatterlab {
 
 CheckReport checkBsdf(const BsdfModel& model, const CheckBsdfOptions& options) {
-  if (options.kit.imageDir) std::filesystem::create_directories(*options.kit.imageDir);
+  if (options.kit.imageDir) createDirectoriesUninterrupted(*options.kit.imageDir);
   CheckReport report = runBsdfChecks(model, options.label, options.kit, options.progress);
   if (options.negativeControls)
     report.append(runNegativeControls(model, options.roughnessMismatchSampler, options.label, options.kit,

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "materials/core/atomic_file.h"
+#include "materials/core/temporary_files.h"
 #include "validation/heatmap.h"
 
 namespace scatterlab {
@@ -25,7 +26,7 @@ std::vector<std::string> chiSquareImageSuffixes() {
 void writeChiSquareImages(const std::filesystem::path& dir, const std::string& stem,
                           const ChiSquareResult& chi, const std::string& layout,
                           const Table2D* consistencyMaxError, double consistencyTolerance) {
-  std::filesystem::create_directories(dir);
+  createDirectoriesUninterrupted(dir);
   double peak = 0;
   for (size_t i = 0; i < chi.observed.values.size(); ++i)
     peak = std::max({peak, chi.observed.values[i], chi.expected.values[i]});

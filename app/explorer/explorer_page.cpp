@@ -6,6 +6,7 @@
 
 #include "app/lab/embedded_assets.h"
 #include "materials/core/atomic_file.h"
+#include "materials/core/temporary_files.h"
 #include "materials/registry/material_file.h"
 #include "materials/registry/parameter_spec.h"
 #include "validation/chi_square_images.h"
@@ -71,7 +72,7 @@ class TableWriter {
     EmbeddedTable table{"/tables/" + stem, "tables/" + stem + ".js", name};
     const std::string text = "(window.scatterlabTables = window.scatterlabTables || {})[" +
                              json(table.path).dump() + "] =\n\"" + base64(readBytes(original)) + "\";\n";
-    fs::create_directories(dir_ / "tables");
+    createDirectoriesUninterrupted(dir_ / "tables");
     writeTextFileAtomically(dir_ / table.script, text);
     bytes_ += text.size();
     return table;
@@ -108,7 +109,7 @@ std::string base64(std::string_view bytes) {
 }
 
 ExplorerWritten writeExplorer(const fs::path& dir, const std::vector<ExplorerMaterial>& materials) {
-  fs::create_directories(dir / "assets");
+  createDirectoriesUninterrupted(dir / "assets");
   ExplorerWritten written;
   for (const auto& [asset, target] : PageFiles) {
     const std::string_view text = embeddedAsset(asset).text();

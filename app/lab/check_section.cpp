@@ -8,6 +8,7 @@
 #include "app/lab/html.h"
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
+#include "materials/core/temporary_files.h"
 #include "materials/registry/spec_validation.h"
 #include "validation/bsdf_check.h"
 #include "validation/subsurface_check.h"
@@ -139,7 +140,7 @@ CheckOutcome runLabChecks(const LabMaterial& material, const LabSettings& settin
   BsdfCheckOptions kit = settings.kit;
   kit.imageDir = materialDir / "check";
   kit.chiSquareTestCount = 0;  // this material's tests only (see the header)
-  fs::create_directories(*kit.imageDir);
+  createDirectoriesUninterrupted(*kit.imageDir);
   CheckOutcome outcome;
   if (material.subsurface) {
     const SubsurfaceCheckOptions options = subsurfaceCheckOptions(kit);

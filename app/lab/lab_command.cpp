@@ -26,6 +26,7 @@
 #include "app/output_guard.h"
 #include "app/plugin_option.h"
 #include "app/progress.h"
+#include "materials/core/temporary_files.h"
 
 namespace scatterlab {
 
@@ -55,7 +56,7 @@ class MaterialReporter {
         dir_(reportDir / material.folder),
         timer_(timer),
         progress_(progress.callback(step + " " + material.name)) {
-    fs::create_directories(dir_);
+    createDirectoriesUninterrupted(dir_);
     report_.name = m_.name;
     report_.folder = m_.folder;
     report_.kind = toString(m_.kind);

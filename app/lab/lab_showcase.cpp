@@ -6,6 +6,7 @@
 #include "app/measured_bundle.h"
 #include "app/synth_command.h"
 #include "app/table_cache.h"
+#include "materials/core/temporary_files.h"
 #include "materials/measured/measurement_synthesis.h"
 #include "materials/measured/ngan_fits.h"
 #include "materials/registry/spec_validation.h"
@@ -105,10 +106,10 @@ std::vector<LabMaterial> showcaseLabMaterials(const fs::path& scratch, PhaseTime
   timer.time("synth", "", [&] {
     fs::path directory = showcaseCacheDirectory().value_or(scratch);
     std::error_code error;
-    fs::create_directories(directory, error);
+    createDirectoriesUninterrupted(directory, error);
     if (error || !fs::is_directory(directory))
       directory = scratch;  // an unwritable cache is no reason to fail
-    fs::create_directories(directory);
+    createDirectoriesUninterrupted(directory);
     TableCache cache(directory);
     materials.push_back(measuredStyle(cache, "gold-metallic-paint", "paint", progress));
     materials.push_back(measuredStyle(cache, "alum-bronze", "metal", progress));

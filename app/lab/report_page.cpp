@@ -6,6 +6,7 @@
 #include "app/lab/embedded_assets.h"
 #include "app/lab/html.h"
 #include "materials/core/atomic_file.h"
+#include "materials/core/temporary_files.h"
 
 namespace scatterlab {
 
@@ -158,7 +159,7 @@ std::string reportHtml(const ReportRun& run, const std::vector<MaterialReport>& 
 }
 
 void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<MaterialReport>& materials) {
-  fs::create_directories(dir / "assets");
+  createDirectoriesUninterrupted(dir / "assets");
   constexpr std::string_view ReportAsset = "report/";
   for (const EmbeddedAsset& asset : embeddedAssets())
     if (asset.name.substr(0, ReportAsset.size()) == ReportAsset)
@@ -167,7 +168,7 @@ void writeReport(const fs::path& dir, const ReportRun& run, const std::vector<Ma
   json summary = json::array();
   bool allPassed = true;
   for (const MaterialReport& m : materials) {
-    fs::create_directories(dir / m.folder);
+    createDirectoriesUninterrupted(dir / m.folder);
     writeTextFileAtomically(dir / m.folder / "data.json", jsonText(materialDataJson(m), 1) + "\n");
     json numbers = json::object();
     for (const auto& [label, value] : m.keyNumbers) numbers[label] = value;

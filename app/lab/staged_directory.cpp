@@ -20,6 +20,7 @@
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
 #include "materials/core/quoted.h"
+#include "materials/core/temporary_files.h"
 
 namespace scatterlab {
 
@@ -117,13 +118,15 @@ StagedDirectory::StagedDirectory(fs::path target, std::string generator, std::st
   refuseOutputOverInputs(optionName, target_, OutputKind::ReplacedDirectory, inputs);
 
   const fs::path parent = target_.parent_path();
-  fs::create_directories(parent, error);
+  createDirectoriesUninterrupted(parent, error);
   if (error || !fs::is_directory(parent))
     throw InputError(optionName + ": cannot create the directory " + inQuotes(parent.string()) + " (" +
                      (error ? error.message() : "a file is in the way") + ")" + allowed);
 
   // One run per target: the lock is released when this process ends, however it ends.
   const fs::path lockPath = parent / ("." + target_.filename().string() + ".lock");
+  // Created and registered under one lock, so an interruption finds it registered.
+  std::unique_lock interruptions = deferInterruptions();
   for (;;) {
     lock_.fd = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (lock_.fd < 0)
@@ -149,6 +152,7 @@ StagedDirectory::StagedDirectory(fs::path target, std::string generator, std::st
     lock_.fd = -1;
   }
   lock_.file = TemporaryPath(lockPath);
+  interruptions.unlock();
   const std::string pid = std::to_string(getpid());
   if (::ftruncate(lock_.fd, 0) != 0 || ::pwrite(lock_.fd, pid.data(), pid.size(), 0) < 0) {
     // The PID only makes the other run's message more helpful.
@@ -159,10 +163,10 @@ StagedDirectory::StagedDirectory(fs::path target, std::string generator, std::st
       throw InputError(optionName + ": " + inQuotes(target_.string()) +
                        " is a directory this command cannot " + "replace: " + *foreign + allowed);
   removeStaleTemporaries(target_);
-  staging_ = TemporaryPath(siblingName(target_, "partial"));
-  if (!fs::create_directory(staging_.path(), error) || error)
+  staging_ = createTemporaryDirectory(siblingName(target_, "partial"), error);
+  if (error)
     throw InputError(optionName + ": cannot create " + inQuotes(staging_.path().string()) + " beside " +
-                     inQuotes(target_.string()) + " (" + (error ? error.message() : "it exists") +
+                     inQuotes(target_.string()) + " (" + error.message() +
                      "); allowed: a path in a writable directory");
 }
 

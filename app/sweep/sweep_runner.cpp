@@ -225,7 +225,7 @@ void prepareSweepDirectory(const SweepSpec& sweep, const fs::path& directory) {
                        ": exists, is not empty and holds no sweep.json; refusing to write into it");
     }
   }
-  fs::create_directories(directory / "tasks");
+  createDirectoriesUninterrupted(directory / "tasks");
   // Shards of a job array may start together: each writes the same bytes atomically.
   if (!fs::exists(manifest, error)) writeTextFileAtomically(manifest, sweepManifest(sweep).dump(2) + "\n");
 }
@@ -278,9 +278,9 @@ SweepRunSummary runSweepShard(const SweepSpec& sweep, const fs::path& directory,
     const SweepTask& task = *pending[n];
     const fs::path final = sweepTaskDirectory(directory, task.index);
     const fs::path staging = final.parent_path() / ("." + final.filename().string() + suffix);
-    fs::remove_all(staging);
-    fs::create_directories(staging);
-    TemporaryPath stagingGuard(staging);  // an interruption removes it (temporary_files.h)
+    std::error_code error;
+    TemporaryPath stagingGuard = createTemporaryDirectory(staging, error);  // temporary_files.h
+    if (error) throw fs::filesystem_error("cannot create the task's staging directory", staging, error);
     const auto start = std::chrono::steady_clock::now();
     const bool ok = runTask(sweep, task, staging);
     {

@@ -56,9 +56,35 @@ pid_t temporaryPid(std::string_view rest) {
 void removeRegisteredTemporaries() {
   std::lock_guard lock(registry().mutex);
   for (const auto& [path, count] : registry().paths) {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
+    std::error_code error;
+    if (!fs::is_directory(fs::symlink_status(path, error))) {
+      fs::remove_all(path, error);
+      continue;
+    }
+    // Other threads may go on writing into a staging directory. Renamed first, it can take no
+    // new file under its old name; a file being created as it was renamed may still land in it,
+    // which the next pass removes. The new name is a temporary of this process too
+    // (NAME.partial-PID-removing), so a run after a crash here removes it as stale.
+    fs::path doomed = path;
+    doomed += "-removing";
+    fs::rename(path, doomed, error);
+    const fs::path& removed = error ? path : doomed;
+    constexpr int Passes = 10;
+    for (int pass = 0; pass < Passes; ++pass) {
+      fs::remove_all(removed, error);
+      if (!fs::exists(fs::symlink_status(removed, error))) break;
+    }
   }
+}
+
+bool createDirectoriesUninterrupted(const fs::path& directory, std::error_code& error) {
+  const auto lock = deferInterruptions();
+  return fs::create_directories(directory, error);
+}
+
+void createDirectoriesUninterrupted(const fs::path& directory) {
+  const auto lock = deferInterruptions();
+  fs::create_directories(directory);
 }
 
 TemporaryPath::TemporaryPath(fs::path path) : path_(std::move(path)) { registerPath(path_); }
@@ -90,6 +116,14 @@ void TemporaryPath::remove() {
   fs::remove_all(path_, ignored);
   unregisterPath(path_);
   path_.clear();
+}
+
+TemporaryPath createTemporaryDirectory(const fs::path& path, std::error_code& error) {
+  const auto lock = deferInterruptions();
+  TemporaryPath directory(path);
+  fs::remove_all(path, error);
+  if (!fs::create_directory(path, error) && !error) error = std::make_error_code(std::errc::file_exists);
+  return directory;
 }
 
 std::unique_lock<std::recursive_mutex> deferInterruptions() { return std::unique_lock(registry().mutex); }

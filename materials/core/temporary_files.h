@@ -48,6 +48,19 @@ std::unique_lock<std::recursive_mutex> deferInterruptions();
 // interruption handler, which then ends the process.
 void removeRegisteredTemporaries();
 
+// std::filesystem::create_directories under the lock of deferInterruptions. Other threads go
+// on working while the interruption handler removes the temporaries; a plain
+// create_directories of a directory inside a staging directory would re-create the staging
+// directory (it creates missing parents) just after the handler removed it. Under the lock it
+// runs before the removal or not at all (the handler ends the process holding the lock).
+bool createDirectoriesUninterrupted(const std::filesystem::path& directory, std::error_code& error);
+void createDirectoriesUninterrupted(const std::filesystem::path& directory);
+
+// Registers `path` and creates it as an empty directory (removing whatever was there), both
+// under the lock of deferInterruptions, so an interruption finds it registered whenever it
+// exists. `error` says why the directory could not be created; the path stays registered.
+TemporaryPath createTemporaryDirectory(const std::filesystem::path& path, std::error_code& error);
+
 // The suffix this process gives temporaries: ".tmp-PID".
 std::string temporarySuffix();
 
