@@ -132,13 +132,19 @@ std::string formatModelCatalogMarkdown() {
   for (const MaterialModel& model : materialModels())
     out += "| " + markdownCode(model.type) + " | " + kindName(model.kind) + " | " +
            markdownText(model.description) + " |\n";
-  for (const MaterialModel& model : materialModels()) out += "\n" + formatModelMarkdown(model);
+  for (const MaterialModel& model : materialModels()) {
+    out += '\n';
+    out += formatModelMarkdown(model);
+  }
   return out;
 }
 
 std::string formatModelCatalog() {
   std::string out;
-  for (const MaterialModel& model : materialModels()) out += (out.empty() ? "" : "\n") + formatModel(model);
+  for (const MaterialModel& model : materialModels()) {
+    if (!out.empty()) out += '\n';
+    out += formatModel(model);
+  }
   return out;
 }
 

@@ -151,10 +151,14 @@ void printText(const LoadedMaterial& loaded, const std::vector<double>& edges,
   for (size_t k = 0; k + 1 < edges.size(); ++k) {
     std::string line = "  " + formatNumber("%-10.4g", edges[k]) + " " + formatNumber("%-10.4g", edges[k + 1]);
     for (int c = 0; c < 3; ++c) {
-      line += " " + formatNumber("%-12.5e", means[size_t(c)][k]);
-      if (const auto& walk = walks[size_t(c)])
-        line += " " + formatNumber("%-12.5e", walk->result.profile[k]) + " " +
-                formatNumber("%-12.3e", walk->result.profileStdError[k]);
+      line += ' ';
+      line += formatNumber("%-12.5e", means[size_t(c)][k]);
+      if (const auto& walk = walks[size_t(c)]) {
+        line += ' ';
+        line += formatNumber("%-12.5e", walk->result.profile[k]);
+        line += ' ';
+        line += formatNumber("%-12.3e", walk->result.profileStdError[k]);
+      }
     }
     line.erase(line.find_last_not_of(' ') + 1);
     std::cout << line << "\n";

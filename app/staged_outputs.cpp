@@ -26,15 +26,6 @@ fs::path directoryOf(const fs::path& file) {
 
 std::string errnoText() { return std::strerror(errno); }
 
-void createDirectories(const std::string& option, const fs::path& directory) {
-  std::error_code error;
-  createDirectoriesUninterrupted(directory, error);
-  if (error || !fs::is_directory(directory))
-    throw InputError(option + ": cannot create the directory " + inQuotes(directory.string()) + " (" +
-                     (error ? error.message() : "a file is in the way") +
-                     "); allowed: a path where a directory can be created");
-}
-
 // One rename of the commit, and the hard link that keeps the old file until all succeeded.
 struct Move {
   const std::string* option;
@@ -84,7 +75,7 @@ void StagedOutputs::addDirectory(const std::string& option, const fs::path& targ
 void StagedOutputs::prepare() {
   for (Output& output : outputs_) {
     const fs::path directory = output.directory ? output.target : directoryOf(output.target);
-    createDirectories(output.option, directory);
+    createOutputDirectory(output.option, directory);
     if (output.directory) {
       removeStaleTemporaries(output.target / StagingStem);
       std::error_code error;
@@ -167,6 +158,14 @@ void StagedOutputs::commit() {
     else
       output.staging.keep();
   }
+}
+
+void createOutputDirectory(const std::string& option, const fs::path& directory, const std::string& allowed) {
+  std::error_code error;
+  createDirectoriesUninterrupted(directory, error);
+  if (error || !fs::is_directory(directory))
+    throw InputError(option + ": cannot create the directory " + inQuotes(directory.string()) + " (" +
+                     (error ? error.message() : "a file is in the way") + ")" + allowed);
 }
 
 }  // namespace scatterlab

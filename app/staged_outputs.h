@@ -67,4 +67,10 @@ class StagedOutputs {
   bool prepared_ = false;
 };
 
+// Creates `directory` and its missing parents, under the interruption lock (temporary_files.h).
+// Throws InputError naming `option`, the directory and why ("a file is in the way" when a file
+// has the name of one); `allowed` ends the message.
+void createOutputDirectory(const std::string& option, const std::filesystem::path& directory,
+                           const std::string& allowed = "; allowed: a path where a directory can be created");
+
 }  // namespace scatterlab

@@ -24,7 +24,6 @@
 #include "app/table_cache.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/quoted.h"
-#include "materials/core/temporary_files.h"
 #include "materials/measured/merl_io.h"
 #include "materials/measured/ngan_fits.h"
 #include "materials/registry/material_file.h"
@@ -172,11 +171,7 @@ fs::path bundleDirectory(const std::string& given) {
 // the right size), then the manifest that records what each file is.
 int runBundle(const SynthCommandOptions& options, const MeasurementPerturbation& perturbation) {
   const fs::path directory = bundleDirectory(*options.bundle);
-  std::error_code error;
-  createDirectoriesUninterrupted(directory, error);
-  if (error || !fs::is_directory(directory))
-    throw InputError("--bundle: cannot create directory " + inQuotes(directory.string()) + " (" +
-                     (error ? error.message() : "a file is in the way") + "); allowed: a directory");
+  createOutputDirectory("--bundle", directory, "; allowed: a directory");
   TableCache cache(directory);
 
   json written = json::array();

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/exit_code.h"
+#include "app/staged_outputs.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/bounded_file.h"
 #include "materials/core/json_text.h"
@@ -118,10 +119,7 @@ StagedDirectory::StagedDirectory(fs::path target, std::string generator, std::st
   refuseOutputOverInputs(optionName, target_, OutputKind::ReplacedDirectory, inputs);
 
   const fs::path parent = target_.parent_path();
-  createDirectoriesUninterrupted(parent, error);
-  if (error || !fs::is_directory(parent))
-    throw InputError(optionName + ": cannot create the directory " + inQuotes(parent.string()) + " (" +
-                     (error ? error.message() : "a file is in the way") + ")" + allowed);
+  createOutputDirectory(optionName, parent, allowed);
 
   // One run per target: the lock is released when this process ends, however it ends.
   const fs::path lockPath = parent / ("." + target_.filename().string() + ".lock");

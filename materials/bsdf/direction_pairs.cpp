@@ -69,7 +69,7 @@ std::vector<DirectionPair> directionPairsFromJson(const json& value) {
   std::vector<DirectionPair> pairs;
   pairs.reserve(value.size());
   for (size_t i = 0; i < value.size(); ++i)
-    pairs.push_back(directionPairFromJson(value[i], "[" + std::to_string(i) + "]"));
+    pairs.push_back(directionPairFromJson(value[i], '[' + std::to_string(i) + ']'));
   return pairs;
 }
 

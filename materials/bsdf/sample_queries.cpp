@@ -49,7 +49,7 @@ std::vector<SampleQuery> sampleQueriesFromJson(const json& value) {
   std::vector<SampleQuery> queries;
   queries.reserve(value.size());
   for (size_t i = 0; i < value.size(); ++i)
-    queries.push_back(sampleQueryFromJson(value[i], "[" + std::to_string(i) + "]"));
+    queries.push_back(sampleQueryFromJson(value[i], '[' + std::to_string(i) + ']'));
   return queries;
 }
 

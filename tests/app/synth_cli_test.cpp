@@ -122,6 +122,8 @@ TEST(SynthCli, BadInputWritesNothing) {
   std::ofstream(blocker) << "a file";
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", (blocker / "sub" / "x.binary").string()},
                  {"--out", "cannot create the directory"});
+  expectBadInput({"synth", "--bundle", blocker.string()},
+                 {"--bundle", "cannot create the directory", blocker.filename().string()});
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", testOutputDir().string()},
                  {"is a directory"});
   expectBadInput({"synth", R"({"type": "lambertian"})", "--out", o, "--log-noise", "-1"},

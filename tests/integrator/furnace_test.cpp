@@ -41,9 +41,14 @@ struct LosslessCase {
 std::vector<LosslessCase> losslessCatalog() {
   std::vector<LosslessCase> cases;
   for (const MaterialModel& model : materialModels())
-    for (size_t i = 0; i < model.losslessExamples.size(); ++i)
-      cases.push_back({model.type + (model.losslessExamples.size() > 1 ? "-" + std::to_string(i + 1) : ""),
-                       model.losslessExamples[i]});
+    for (size_t i = 0; i < model.losslessExamples.size(); ++i) {
+      std::string name = model.type;
+      if (model.losslessExamples.size() > 1) {
+        name += '-';
+        name += std::to_string(i + 1);
+      }
+      cases.push_back({name, model.losslessExamples[i]});
+    }
   return cases;
 }
 
